@@ -1,0 +1,23 @@
+#pragma once
+// Shared plumbing of demoplan-cli subcommands. Contract (DESIGN.md): a human summary on stderr,
+// with --json exactly one JSON object on stdout; exit 0 ok, 1 job ran but failed, 2 bad input.
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+
+namespace demoplan::cli {
+
+enum ExitCode { kOk = 0, kFailed = 1, kBadInput = 2 };
+
+// Each subcommand registers its options and returns itself with the action to run when selected.
+struct Command {
+  CLI::App* sub = nullptr;
+  std::function<int()> run;
+};
+Command register_check_command(CLI::App& app);
+
+// The benchmark data folder: --data-dir, else $DEMOPLAN_DATA_DIR, else the bundled copy.
+std::string default_data_dir();
+void add_data_dir_option(CLI::App& sub, std::string& data_dir);
+
+}  // namespace demoplan::cli

@@ -1,0 +1,31 @@
+// demoplan-cli: the headless entry point to every job of demoplan.
+#include <iostream>
+
+#include "app/cli/command.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  using namespace demoplan::cli;
+  CLI::App app{"demoplan: teach a robot cell a task from one video"};
+  app.require_subcommand(1);
+  const std::vector<Command> commands{register_check_command(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kBadInput;
+  }
+  try {
+    for (const auto& c : commands)
+      if (c.sub->parsed()) return c.run();
+  } catch (const demoplan::InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kFailed;
+  }
+  return kBadInput;
+}

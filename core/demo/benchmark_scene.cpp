@@ -1,0 +1,191 @@
+#include "core/demo/benchmark_scene.h"
+
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/io/json_file.h"
+
+namespace demoplan {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+JsonField robot_entry(const Json& json, const std::string& file, const std::string& name) {
+  const JsonField robots = JsonField(json, file)["robots"];
+  if (!robots.has(name)) {
+    std::string known;
+    for (const auto& [k, _] : robots.value().items()) known += (known.empty() ? "" : ", ") + k;
+    robots.fail("no robot '" + name + "' (known: " + known + ")");
+  }
+  return robots[name];
+}
+
+// The box the benchmark puts under a fixed robot, from the pose file (README 5.1). The file
+// keeps the benchmark's negative heights where the base is below a shelf top; the box then
+// spans |height| (it only matters for objects and moving links). A zero-size box is omitted.
+bool add_support_box(const JsonField& entry, const std::string& name, Scene& scene) {
+  const Pose pose = entry["pose"].pose();
+  const Eigen::Vector3d size = entry["size"].vector().cwiseAbs();
+  if (size.size() != 3) entry["size"].fail("must have 3 entries");
+  if ((size.array() <= 0).any()) return false;
+  SceneFurniture box;
+  box.name = name;
+  box.kind = "box";
+  box.model.name = name;
+  box.model.links.push_back({});
+  box.model.links[0].name = "box";
+  box.model.links[0].collisions.push_back({BoxShape{size}, Pose::Identity(), {0.43, 0.34, 0.24, 0.9}});
+  box.model.links[0].visuals = box.model.links[0].collisions;
+  box.link_poses = {pose};
+  scene.furniture.push_back(std::move(box));
+  return true;
+}
+
+// Rows of task.objects that are planning objects: planning_object_ids is object_ids without trays.
+std::vector<size_t> planning_rows(const BenchmarkTask& task) {
+  std::vector<size_t> rows;
+  for (size_t i = 0; i < task.objects.size(); ++i)
+    if (task.objects[i].in_planning_model) rows.push_back(i);
+  if (rows.size() != task.planning_object_ids.size())
+    throw InputError(task.file, "planning_object_ids", "must list the objects with in_planning_model");
+  for (size_t i = 0; i < rows.size(); ++i)
+    if (task.objects[rows[i]].id != task.planning_object_ids[i])
+      throw InputError(task.file, "planning_object_ids[" + std::to_string(i) + "]",
+                       "must equal object_ids without trays, in order");
+  return rows;
+}
+
+}  // namespace
+
+BenchmarkRobot load_benchmark_robot(const std::string& data_dir, const std::string& name) {
+  const std::string file = (fs::path(data_dir) / "robots" / "robots.json").string();
+  const Json json = read_json_file(file);
+  const JsonField r = robot_entry(json, file, name);
+  BenchmarkRobot out;
+  out.name = name;
+  out.urdf = (fs::path(data_dir) / r["urdf"].string()).lexically_normal().string();
+  out.srdf = (fs::path(data_dir) / r["srdf"].string()).lexically_normal().string();
+  const std::string type = r["robot_type"].string();
+  if (type != "fixed" && type != "mobile") r["robot_type"].fail("must be 'fixed' or 'mobile'");
+  out.fixed_base = type == "fixed";
+  out.initial_configuration = r["initial_configuration"].vector();
+  return out;
+}
+
+std::vector<std::string> list_benchmark_robots(const std::string& data_dir) {
+  const std::string file = (fs::path(data_dir) / "robots" / "robots.json").string();
+  const Json json = read_json_file(file);
+  std::vector<std::string> out;
+  for (const auto& [k, _] : JsonField(json, file)["robots"].value().items()) out.push_back(k);
+  return out;
+}
+
+std::vector<int> benchmark_pose_ids(const BenchmarkTask& task, const std::string& robot) {
+  auto it = task.robot_pose_files.find(robot);
+  if (it == task.robot_pose_files.end()) return {};
+  const Json json = read_json_file(it->second);
+  const JsonField ids = JsonField(json, it->second)["pose_ids"];
+  std::vector<int> out;
+  for (size_t i = 0; i < ids.size(); ++i) out.push_back(ids[i].integer());
+  return out;
+}
+
+Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_name, int pose_id,
+                            const SceneLoadOptions& options) {
+  Scene scene;
+  scene.name = task.name() + " " + robot_name + " pose " + std::to_string(pose_id);
+  UrdfOptions urdf_options;
+  urdf_options.load_visual_meshes = options.load_visual_meshes;
+  urdf_options.mesh_cache = options.mesh_cache;
+
+  // Robot.
+  const BenchmarkRobot info = load_benchmark_robot(task.data_dir, robot_name);
+  auto pose_file = task.robot_pose_files.find(robot_name);
+  if (pose_file == task.robot_pose_files.end()) {
+    std::string known;
+    for (const auto& [k, _] : task.robot_pose_files) known += (known.empty() ? "" : ", ") + k;
+    throw InputError(task.file, "robot_poses", "task has no poses for robot '" + robot_name +
+                                                   "' (it has: " + known + ")");
+  }
+  const Json poses_json = read_json_file(pose_file->second);
+  const JsonField poses(poses_json, pose_file->second);
+  const std::string key = std::to_string(pose_id);
+  if (!poses["poses"].has(key)) {
+    std::string known;
+    for (const auto& [k, _] : poses["poses"].value().items()) known += (known.empty() ? "" : ", ") + k;
+    poses["poses"].fail("no robot pose id " + key + " (available: " + known + ")");
+  }
+  SceneRobot& robot = scene.robot;
+  robot.name = robot_name;
+  robot.model = load_urdf(info.urdf, urdf_options);
+  robot.srdf = load_srdf(info.srdf);
+  robot.base = poses["poses"][key].pose();
+  robot.fixed_base = info.fixed_base;
+  robot.initial_configuration = info.initial_configuration;
+  if (robot.initial_configuration.size() != robot.model.nq)
+    throw InputError(info.urdf, "", "robots.json initial_configuration of '" + robot_name + "' has " +
+                                        std::to_string(robot.initial_configuration.size()) +
+                                        " entries, the URDF " + std::to_string(robot.model.nq) + " joints");
+  if (robot.srdf.grippers.empty()) throw InputError(info.srdf, "gripper", "robot has no gripper");
+  robot.gripper_link = robot.model.link_index(robot.gripper().link);
+  if (robot.gripper_link < 0)
+    throw InputError(info.srdf, "gripper '" + robot.gripper().name + "' link",
+                     "link '" + robot.gripper().link + "' is not in " + info.urdf);
+
+  // Furniture, then the support box (the benchmark appends it last).
+  for (size_t i = 0; i < task.furniture.size(); ++i) {
+    const auto& f = task.furniture[i];
+    SceneFurniture fu;
+    fu.kind = f.kind;
+    fu.name = fs::path(f.urdf).stem().string();
+    fu.model = load_urdf(f.urdf, urdf_options);
+    fu.srdf = load_srdf(f.srdf);
+    forward_kinematics(fu.model, Eigen::VectorXd::Zero(fu.model.nq), Pose::Identity(), fu.link_poses);
+    if (fu.model.nq != 0) throw InputError(f.urdf, "", "furniture must have only fixed joints");
+    if (task.task_name == "tunnel" && f.kind == "tunnel")
+      fu.robot_ignored_links = {"left_sideB", "right_sideB", "top_sideB"};
+    scene.furniture.push_back(std::move(fu));
+  }
+  if (robot.fixed_base) {
+    const JsonField boxes = poses["support_box"];
+    add_support_box(boxes[key], task.name() + "_" + std::to_string(task.furniture.size()) + "_box_" +
+                                    robot_name + "_" + key, scene);
+  }
+
+  // Planning objects (trays are not part of the collision model), in planning_object_ids order.
+  for (size_t row : planning_rows(task)) {
+    const auto& o = task.objects[row];
+    SceneObject so;
+    so.id = o.id;
+    so.model_name = o.model_name;
+    so.model = load_urdf(o.urdf, urdf_options);
+    so.srdf = load_srdf(o.srdf);
+    if (so.model.nq != 0) throw InputError(o.urdf, "", "objects must be rigid (fixed joints only)");
+    scene.objects.push_back(std::move(so));
+  }
+  return scene;
+}
+
+namespace {
+SceneState state_at(const BenchmarkTask& task, const Scene& scene, bool goal) {
+  SceneState s;
+  s.q = scene.robot.initial_configuration;
+  const std::vector<size_t> rows = planning_rows(task);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const PoseList& track = task.subgoal_poses.empty() ? task.raw_poses[rows[i]] : task.subgoal_poses[i];
+    s.objects.push_back(goal ? track.back() : track.front());
+  }
+  return s;
+}
+}  // namespace
+
+SceneState benchmark_start_state(const BenchmarkTask& task, const Scene& scene) {
+  return state_at(task, scene, false);
+}
+
+SceneState benchmark_goal_state(const BenchmarkTask& task, const Scene& scene) {
+  return state_at(task, scene, true);
+}
+
+}  // namespace demoplan

@@ -1,0 +1,117 @@
+#include "core/io/json_file.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+
+namespace demoplan {
+
+Json read_json_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "", "cannot open file");
+  try {
+    return Json::parse(in);
+  } catch (const Json::parse_error& e) {
+    std::string what = e.what();
+    // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> keep the tail.
+    if (auto pos = what.find("parse error"); pos != std::string::npos) what = what.substr(pos);
+    throw InputError(path, "", "invalid JSON: " + what);
+  }
+}
+
+void write_json_file_atomic(const std::string& path, const Json& value, int indent) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    if (!out) throw InputError(path, "", "cannot write file");
+    out << value.dump(indent) << '\n';
+    out.flush();
+    if (!out) throw InputError(path, "", "write failed");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) throw InputError(path, "", "cannot replace file: " + ec.message());
+}
+
+void JsonField::fail(const std::string& reason) const {
+  throw InputError(file_, path_.empty() ? "(top level)" : path_, reason);
+}
+
+JsonField JsonField::operator[](const std::string& key) const {
+  if (!value_->is_object()) fail("must be an object");
+  auto it = value_->find(key);
+  const std::string p = path_.empty() ? key : path_ + "." + key;
+  if (it == value_->end()) throw InputError(file_, p, "missing");
+  return JsonField(*it, file_, p);
+}
+
+JsonField JsonField::operator[](size_t index) const {
+  if (!value_->is_array()) fail("must be an array");
+  const std::string p = path_ + "[" + std::to_string(index) + "]";
+  if (index >= value_->size())
+    throw InputError(file_, p, "missing (array has " + std::to_string(value_->size()) + " entries)");
+  return JsonField((*value_)[index], file_, p);
+}
+
+bool JsonField::has(const std::string& key) const {
+  return value_->is_object() && value_->contains(key);
+}
+
+size_t JsonField::size() const {
+  if (!value_->is_array()) fail("must be an array");
+  return value_->size();
+}
+
+double JsonField::number() const {
+  if (!value_->is_number()) fail("must be a number");
+  const double v = value_->get<double>();
+  if (!std::isfinite(v)) fail("must be a finite number");
+  return v;
+}
+
+int JsonField::integer() const {
+  if (!value_->is_number_integer()) fail("must be an integer");
+  return value_->get<int>();
+}
+
+bool JsonField::boolean() const {
+  if (!value_->is_boolean()) fail("must be true or false");
+  return value_->get<bool>();
+}
+
+std::string JsonField::string() const {
+  if (!value_->is_string()) fail("must be a string");
+  return value_->get<std::string>();
+}
+
+Eigen::VectorXd JsonField::vector() const {
+  Eigen::VectorXd v(size());
+  for (size_t i = 0; i < v.size(); ++i) v[i] = (*this)[i].number();
+  return v;
+}
+
+Pose JsonField::pose(double rotation_tol) const {
+  if (!value_->is_array() || value_->size() != 4) fail("must be a 4x4 matrix (4 rows of 4 numbers)");
+  Eigen::Matrix4d M;
+  for (int r = 0; r < 4; ++r) {
+    const JsonField row = (*this)[r];
+    if (!row.value().is_array() || row.size() != 4) row.fail("must be a row of 4 numbers");
+    for (int c = 0; c < 4; ++c) {
+      const JsonField cell = row[c];
+      if (cell.value().is_null()) cell.fail("is null (NaN in the source data?)");
+      M(r, c) = cell.number();
+    }
+  }
+  if ((M.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 1e-9)
+    fail("last row must be [0, 0, 0, 1]");
+  if (!is_rotation(M.topLeftCorner<3, 3>(), rotation_tol))
+    fail("rotation block is not orthonormal with determinant 1");
+  Pose T = Pose::Identity();
+  T.matrix() = M;
+  return T;
+}
+
+}  // namespace demoplan

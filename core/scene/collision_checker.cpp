@@ -1,0 +1,427 @@
+#include "core/scene/collision_checker.h"
+
+#include <fcl/fcl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "core/error.h"
+
+namespace demoplan {
+
+using fcl::CollisionObjectd;
+
+void AllowedContacts::allow_gripper(const Scene& scene, int object) {
+  const auto& model = scene.robot.model;
+  // The gripper link and all links below it: hand, fingers, anything mounted on them.
+  std::vector<int> stack{scene.robot.gripper_link};
+  while (!stack.empty()) {
+    const int l = stack.back();
+    stack.pop_back();
+    allow_object_link(object, l);
+    for (int j : model.links[l].child_joints) stack.push_back(model.joints[j].child_link);
+  }
+}
+
+bool AllowedContacts::allows_object_link(int object, int link) const {
+  return std::find(object_link.begin(), object_link.end(), std::make_pair(object, link)) !=
+         object_link.end();
+}
+
+bool AllowedContacts::allows_object_furniture(int object, int furniture) const {
+  return std::find(object_furniture.begin(), object_furniture.end(),
+                   std::make_pair(object, furniture)) != object_furniture.end();
+}
+
+namespace collision_detail {
+
+enum class Owner { Robot, Object, Furniture };
+
+struct GeomInfo {
+  Owner owner = Owner::Robot;
+  int index = -1;  // robot link, object index or furniture index
+  int link = -1;   // link within the owner's model
+  Pose local = Pose::Identity();  // in the owner's link frame (objects: in the object frame)
+  std::string name;
+  bool world_fixed = false;    // robot geometry on the root of a fixed-base robot
+  bool robot_ignored = false;  // furniture geometry the robot never collides with
+  std::shared_ptr<fcl::CollisionGeometryd> geometry;
+};
+
+using MeshKey = std::pair<const TriangleMesh*, std::tuple<double, double, double>>;
+
+std::shared_ptr<fcl::CollisionGeometryd> make_fcl_geometry(
+    const Geometry& g, std::map<MeshKey, std::shared_ptr<fcl::CollisionGeometryd>>& meshes) {
+  if (auto* b = std::get_if<BoxShape>(&g.shape)) return std::make_shared<fcl::Boxd>(b->size);
+  if (auto* c = std::get_if<CylinderShape>(&g.shape))
+    return std::make_shared<fcl::Cylinderd>(c->radius, c->length);
+  if (auto* s = std::get_if<SphereShape>(&g.shape)) return std::make_shared<fcl::Sphered>(s->radius);
+  const auto& m = std::get<MeshShape>(g.shape);
+  const MeshKey key{m.mesh.get(), {m.scale.x(), m.scale.y(), m.scale.z()}};
+  if (auto it = meshes.find(key); it != meshes.end()) return it->second;
+  std::vector<fcl::Vector3d> vertices;
+  vertices.reserve(m.mesh->vertices.size());
+  for (const auto& v : m.mesh->vertices) vertices.push_back(v.cast<double>().cwiseProduct(m.scale));
+  std::vector<fcl::Triangle> triangles;
+  triangles.reserve(m.mesh->triangles.size());
+  for (const auto& t : m.mesh->triangles) triangles.emplace_back(t[0], t[1], t[2]);
+  auto bvh = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+  bvh->beginModel(static_cast<int>(triangles.size()), static_cast<int>(vertices.size()));
+  bvh->addSubModel(vertices, triangles);
+  bvh->endModel();
+  bvh->computeLocalAABB();
+  meshes.emplace(key, bvh);
+  return bvh;
+}
+
+}  // namespace collision_detail
+using namespace collision_detail;
+
+struct CollisionData::Workspace {
+  PoseVector link_poses;
+  PoseList object_poses;
+  std::vector<CollisionObjectd> robot;    // one per robot geometry, world transform set per query
+  std::vector<CollisionObjectd> objects;  // one per object geometry
+  fcl::CollisionRequestd request;
+  fcl::CollisionResultd result;
+
+  // Object-vs-furniture and object-vs-object results do not depend on the robot. Within a
+  // planning state most objects stay put, so a pair found free is remembered until one of its
+  // objects moves (or, against furniture, until the allowed contacts change).
+  PoseList last_object_tf;                         // per object geometry
+  std::vector<char> moved;                         // per object geometry, this query
+  std::vector<char> world_free;                    // per object geometry
+  std::vector<std::vector<int>> world_allowed;     // allowed furniture when world_free was set
+  std::vector<char> pair_free;                     // object geometry pairs, row-major
+};
+
+CollisionData::CollisionData() = default;
+CollisionData::~CollisionData() = default;
+CollisionData::CollisionData(CollisionData&&) noexcept = default;
+CollisionData& CollisionData::operator=(CollisionData&&) noexcept = default;
+
+using Workspace = CollisionData::Workspace;
+
+struct CollisionChecker::Impl {
+  std::vector<GeomInfo> robot, objects, furniture;
+  std::vector<CollisionObjectd> robot_proto, object_proto;
+  std::vector<std::unique_ptr<CollisionObjectd>> furniture_objects;
+  fcl::DynamicAABBTreeCollisionManagerd world;
+  std::vector<std::pair<int, int>> self_pairs;  // robot geometry indices
+
+  // Collects results of one query; shared by the broad-phase callback and the pair loops.
+  struct Query {
+    const Impl* impl;
+    Workspace* data;
+    const AllowedContacts* allowed;
+    std::vector<CollisionPair>* all;  // null: stop at the first hit
+    CollisionPair first;
+    bool hit = false;
+    int hits = 0;
+    const GeomInfo* query_info = nullptr;  // broad phase: the moving geometry asked about
+    CollisionObjectd* query_object = nullptr;
+
+    bool done() const { return hit && !all; }
+
+    void narrow(CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {
+      data->result.clear();
+      if (fcl::collide(&a, &b, data->request, data->result) == 0) return;
+      CollisionPair p{ia.name, ib.name};
+      if (!hit) first = p;
+      hit = true;
+      ++hits;
+      if (all) all->push_back(std::move(p));
+    }
+  };
+
+  bool skip_furniture(const GeomInfo& moving, const GeomInfo& f, const AllowedContacts& allowed) const {
+    if (moving.owner == Owner::Robot) return moving.world_fixed || f.robot_ignored;
+    return allowed.allows_object_furniture(moving.index, f.index);
+  }
+
+  static bool broadphase_callback(CollisionObjectd* o1, CollisionObjectd* o2, void* cdata) {
+    auto* q = static_cast<Query*>(cdata);
+    CollisionObjectd* other = (o1 == q->query_object) ? o2 : o1;
+    const auto* f = static_cast<const GeomInfo*>(other->getUserData());
+    if (q->impl->skip_furniture(*q->query_info, *f, *q->allowed)) return false;
+    q->narrow(*q->query_object, *q->query_info, *other, *f);
+    return q->done();
+  }
+
+  void against_world(Query& q, CollisionObjectd& obj, const GeomInfo& info) const {
+    q.query_info = &info;
+    q.query_object = &obj;
+    world.collide(&obj, &q, &Impl::broadphase_callback);
+  }
+
+  void place(const Scene& scene, const SceneState& state, Workspace& d) const {
+    forward_kinematics(scene.robot.model, state.q, scene.robot.base, d.link_poses);
+    d.object_poses = state.objects;
+    for (const auto& a : state.attachments) d.object_poses[a.object] = d.link_poses[a.link] * a.link_T_object;
+    for (size_t i = 0; i < robot.size(); ++i) {
+      d.robot[i].setTransform(d.link_poses[robot[i].link] * robot[i].local);
+      d.robot[i].computeAABB();
+    }
+    const size_t n = objects.size();
+    if (d.last_object_tf.size() != n) {
+      d.last_object_tf.assign(n, Pose(Eigen::Matrix4d::Constant(std::nan(""))));
+      d.moved.assign(n, 1);
+      d.world_free.assign(n, 0);
+      d.world_allowed.assign(n, {});
+      d.pair_free.assign(n * n, 0);
+    }
+    for (size_t i = 0; i < n; ++i) {
+      const Pose tf = d.object_poses[objects[i].index] * objects[i].local;
+      d.moved[i] = !(tf.matrix().array() == d.last_object_tf[i].matrix().array()).all();
+      if (d.moved[i]) {
+        d.last_object_tf[i] = tf;
+        d.world_free[i] = 0;
+        for (size_t k = 0; k < n; ++k) d.pair_free[i * n + k] = d.pair_free[k * n + i] = 0;
+      }
+      d.objects[i].setTransform(tf);
+      d.objects[i].computeAABB();
+    }
+  }
+
+  static std::vector<int> allowed_furniture(const AllowedContacts& allowed, int object) {
+    std::vector<int> out;
+    for (const auto& [o, f] : allowed.object_furniture)
+      if (o == object) out.push_back(f);
+    return out;
+  }
+
+  void run(Query& q) const {
+    Workspace& d = *q.data;
+    // Robot against the furniture first: random configurations hit it most often.
+    for (size_t i = 0; i < robot.size() && !q.done(); ++i)
+      if (!robot[i].world_fixed) against_world(q, d.robot[i], robot[i]);
+    for (const auto& [i, j] : self_pairs) {
+      if (q.done()) return;
+      if (d.robot[i].getAABB().overlap(d.robot[j].getAABB())) q.narrow(d.robot[i], robot[i], d.robot[j], robot[j]);
+    }
+    for (size_t o = 0; o < objects.size() && !q.done(); ++o) {
+      const GeomInfo& oi = objects[o];
+      for (size_t r = 0; r < robot.size() && !q.done(); ++r) {
+        if (q.allowed->allows_object_link(oi.index, robot[r].link)) continue;
+        if (d.objects[o].getAABB().overlap(d.robot[r].getAABB())) q.narrow(d.objects[o], oi, d.robot[r], robot[r]);
+      }
+      const size_t n = objects.size();
+      for (size_t p = o + 1; p < n && !q.done(); ++p) {
+        if (objects[p].index == oi.index || d.pair_free[o * n + p]) continue;
+        const int before = q.hits;
+        if (d.objects[o].getAABB().overlap(d.objects[p].getAABB())) q.narrow(d.objects[o], oi, d.objects[p], objects[p]);
+        d.pair_free[o * n + p] = q.hits == before;
+      }
+      if (q.done()) return;
+      std::vector<int> allowed = allowed_furniture(*q.allowed, oi.index);
+      if (d.world_free[o] && d.world_allowed[o] == allowed) continue;
+      const int before = q.hits;
+      against_world(q, d.objects[o], oi);
+      d.world_free[o] = q.hits == before;
+      d.world_allowed[o] = std::move(allowed);
+    }
+  }
+};
+
+CollisionChecker::CollisionChecker(const Scene& scene, CollisionOptions options)
+    : scene_(scene), impl_(std::make_unique<Impl>()) {
+  std::map<MeshKey, std::shared_ptr<fcl::CollisionGeometryd>> meshes;
+  auto add = [&](std::vector<GeomInfo>& list, GeomInfo info, const Geometry& g) {
+    info.geometry = make_fcl_geometry(g, meshes);
+    list.push_back(std::move(info));
+  };
+
+  // Robot.
+  const RobotModel& rm = scene.robot.model;
+  const std::vector<int> body = rm.rigid_bodies();
+  for (size_t l = 0; l < rm.links.size(); ++l) {
+    for (const auto& g : rm.links[l].collisions) {
+      GeomInfo info;
+      info.owner = Owner::Robot;
+      info.index = info.link = static_cast<int>(l);
+      info.local = g.origin;
+      info.name = "robot/" + rm.links[l].name;
+      info.world_fixed = scene.robot.fixed_base && body[l] == 0;
+      add(impl_->robot, std::move(info), g);
+    }
+  }
+  auto adjacent = [&](int a, int b) {
+    // Bodies joined by one moving joint: the parent joint of one body's top link hangs off the other.
+    auto joined = [&](int child_body, int parent_body) {
+      const int pj = rm.links[child_body].parent_joint;
+      return pj >= 0 && body[rm.joints[pj].parent_link] == parent_body;
+    };
+    return joined(body[a], body[b]) || joined(body[b], body[a]);
+  };
+  for (size_t i = 0; i < impl_->robot.size(); ++i) {
+    for (size_t j = i + 1; j < impl_->robot.size(); ++j) {
+      const auto& a = impl_->robot[i];
+      const auto& b = impl_->robot[j];
+      if (body[a.link] == body[b.link]) continue;
+      if (a.world_fixed && b.world_fixed) continue;
+      if (scene.robot.srdf.collision_disabled(rm.links[a.link].name, rm.links[b.link].name)) continue;
+      if (options.skip_adjacent_links && adjacent(a.link, b.link)) continue;
+      impl_->self_pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    }
+  }
+
+  // Objects: geometry relative to the object's root frame.
+  for (size_t o = 0; o < scene.objects.size(); ++o) {
+    const RobotModel& om = scene.objects[o].model;
+    PoseVector poses;
+    forward_kinematics(om, Eigen::VectorXd::Zero(om.nq), Pose::Identity(), poses);
+    for (size_t l = 0; l < om.links.size(); ++l) {
+      for (const auto& g : om.links[l].collisions) {
+        GeomInfo info;
+        info.owner = Owner::Object;
+        info.index = static_cast<int>(o);
+        info.link = static_cast<int>(l);
+        info.local = poses[l] * g.origin;
+        info.name = "object/" + scene.objects[o].id;
+        add(impl_->objects, std::move(info), g);
+      }
+    }
+  }
+
+  // Furniture: fixed in the world, registered once in the broad phase.
+  for (size_t f = 0; f < scene.furniture.size(); ++f) {
+    const auto& fu = scene.furniture[f];
+    for (size_t l = 0; l < fu.model.links.size(); ++l) {
+      const auto& link = fu.model.links[l];
+      const bool ignored = std::find(fu.robot_ignored_links.begin(), fu.robot_ignored_links.end(),
+                                     link.name) != fu.robot_ignored_links.end();
+      for (const auto& g : link.collisions) {
+        GeomInfo info;
+        info.owner = Owner::Furniture;
+        info.index = static_cast<int>(f);
+        info.link = static_cast<int>(l);
+        info.local = fu.link_poses[l] * g.origin;
+        info.name = fu.name + "/" + link.name;
+        info.robot_ignored = ignored;
+        add(impl_->furniture, std::move(info), g);
+      }
+    }
+  }
+  // Pointers into impl_->furniture stay valid: the vector is complete now.
+  for (auto& info : impl_->furniture) {
+    auto obj = std::make_unique<CollisionObjectd>(info.geometry, info.local);
+    obj->setUserData(&info);
+    obj->computeAABB();
+    impl_->furniture_objects.push_back(std::move(obj));
+  }
+  std::vector<CollisionObjectd*> raw;
+  for (auto& o : impl_->furniture_objects) raw.push_back(o.get());
+  impl_->world.registerObjects(raw);
+  impl_->world.setup();
+
+  // Prototypes copied into each CollisionData (copying does not touch the shared geometry,
+  // unlike constructing, which recomputes its local AABB: keep that single-threaded).
+  for (auto& info : impl_->robot) impl_->robot_proto.emplace_back(info.geometry);
+  for (auto& info : impl_->objects) impl_->object_proto.emplace_back(info.geometry);
+}
+
+CollisionChecker::~CollisionChecker() = default;
+
+CollisionData CollisionChecker::make_data() const {
+  CollisionData d;
+  d.w_ = std::make_unique<Workspace>();
+  d.w_->robot = impl_->robot_proto;
+  d.w_->objects = impl_->object_proto;
+  return d;
+}
+
+size_t CollisionChecker::pair_count() const {
+  const auto& I = *impl_;
+  size_t moving_robot = 0, robot_visible_furniture = 0;
+  for (const auto& r : I.robot) moving_robot += !r.world_fixed;
+  for (const auto& f : I.furniture) robot_visible_furniture += !f.robot_ignored;
+  size_t object_pairs = 0;
+  for (size_t o = 0; o < I.objects.size(); ++o)
+    for (size_t p = o + 1; p < I.objects.size(); ++p) object_pairs += I.objects[o].index != I.objects[p].index;
+  return I.self_pairs.size() + moving_robot * robot_visible_furniture +
+         I.objects.size() * (I.robot.size() + I.furniture.size()) + object_pairs;
+}
+
+bool CollisionChecker::in_collision(const SceneState& state, CollisionData& data,
+                                    const AllowedContacts& allowed, CollisionPair* hit) const {
+  impl_->place(scene_, state, *data.w_);
+  Impl::Query q{impl_.get(), data.w_.get(), &allowed, nullptr, {}};
+  impl_->run(q);
+  if (q.hit && hit) *hit = q.first;
+  return q.hit;
+}
+
+std::vector<CollisionPair> CollisionChecker::collisions(const SceneState& state, CollisionData& data,
+                                                        const AllowedContacts& allowed) const {
+  impl_->place(scene_, state, *data.w_);
+  std::vector<CollisionPair> all;
+  Impl::Query q{impl_.get(), data.w_.get(), &allowed, &all, {}};
+  impl_->run(q);
+  return all;
+}
+
+namespace {
+
+struct DistanceQuery {
+  const CollisionChecker::Impl* impl;
+  const AllowedContacts* allowed;
+  DistanceResult best;
+  const GeomInfo* query_info = nullptr;
+  CollisionObjectd* query_object = nullptr;
+  fcl::DistanceRequestd request{true};
+
+  void measure(CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {
+    if (a.getAABB().distance(b.getAABB()) >= best.distance) return;
+    fcl::DistanceResultd r;
+    fcl::distance(&a, &b, request, r);
+    if (r.min_distance < best.distance) {
+      best.distance = std::max(0.0, r.min_distance);
+      best.pair = {ia.name, ib.name};
+      best.first_point = r.nearest_points[0];
+      best.second_point = r.nearest_points[1];
+    }
+  }
+};
+
+}  // namespace
+
+DistanceResult CollisionChecker::distance(const SceneState& state, CollisionData& data,
+                                          const AllowedContacts& allowed) const {
+  CollisionPair hit;
+  if (in_collision(state, data, allowed, &hit)) return {0.0, hit, {}, {}};  // also places the scene
+  const Impl& I = *impl_;
+  Workspace& w = *data.w_;
+  DistanceQuery q{impl_.get(), &allowed, {}};
+  q.best.distance = std::numeric_limits<double>::infinity();
+  auto world_callback = [](CollisionObjectd* o1, CollisionObjectd* o2, void* cdata, double& dist) {
+    auto* dq = static_cast<DistanceQuery*>(cdata);
+    CollisionObjectd* other = (o1 == dq->query_object) ? o2 : o1;
+    const auto* f = static_cast<const GeomInfo*>(other->getUserData());
+    if (!dq->impl->skip_furniture(*dq->query_info, *f, *dq->allowed))
+      dq->measure(*dq->query_object, *dq->query_info, *other, *f);
+    dist = dq->best.distance;
+    return false;
+  };
+  auto against_world = [&](CollisionObjectd& obj, const GeomInfo& info) {
+    q.query_info = &info;
+    q.query_object = &obj;
+    I.world.distance(&obj, &q, world_callback);
+  };
+  for (size_t i = 0; i < I.robot.size(); ++i)
+    if (!I.robot[i].world_fixed) against_world(w.robot[i], I.robot[i]);
+  for (const auto& [i, j] : I.self_pairs) q.measure(w.robot[i], I.robot[i], w.robot[j], I.robot[j]);
+  for (size_t o = 0; o < I.objects.size(); ++o) {
+    for (size_t r = 0; r < I.robot.size(); ++r)
+      if (!allowed.allows_object_link(I.objects[o].index, I.robot[r].link))
+        q.measure(w.objects[o], I.objects[o], w.robot[r], I.robot[r]);
+    for (size_t p = o + 1; p < I.objects.size(); ++p)
+      if (I.objects[p].index != I.objects[o].index) q.measure(w.objects[o], I.objects[o], w.objects[p], I.objects[p]);
+    against_world(w.objects[o], I.objects[o]);
+  }
+  return q.best;
+}
+
+}  // namespace demoplan
