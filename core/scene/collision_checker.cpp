@@ -390,8 +390,21 @@ struct DistanceQuery {
 
 DistanceResult CollisionChecker::distance(const SceneState& state, CollisionData& data,
                                           const AllowedContacts& allowed) const {
-  CollisionPair hit;
-  if (in_collision(state, data, allowed, &hit)) return {0.0, hit, {}, {}};  // also places the scene
+  return min_distance(state, data, allowed, -1);
+}
+
+DistanceResult CollisionChecker::object_distance(const SceneState& state, CollisionData& data,
+                                                 int object, const AllowedContacts& allowed) const {
+  return min_distance(state, data, allowed, object);
+}
+
+DistanceResult CollisionChecker::min_distance(const SceneState& state, CollisionData& data,
+                                              const AllowedContacts& allowed, int only_object) const {
+  const auto pairs = collisions(state, data, allowed);  // also places the scene
+  for (const auto& p : pairs)
+    if (only_object < 0 || p.first == "object/" + scene_.objects[only_object].id ||
+        p.second == "object/" + scene_.objects[only_object].id)
+      return {0.0, p, {}, {}};
   const Impl& I = *impl_;
   Workspace& w = *data.w_;
   DistanceQuery q{impl_.get(), &allowed, {}};
@@ -410,15 +423,20 @@ DistanceResult CollisionChecker::distance(const SceneState& state, CollisionData
     q.query_object = &obj;
     I.world.distance(&obj, &q, world_callback);
   };
-  for (size_t i = 0; i < I.robot.size(); ++i)
+  const bool everything = only_object < 0;
+  auto involved = [&](size_t o) { return everything || I.objects[o].index == only_object; };
+  for (size_t i = 0; i < I.robot.size() && everything; ++i)
     if (!I.robot[i].world_fixed) against_world(w.robot[i], I.robot[i]);
-  for (const auto& [i, j] : I.self_pairs) q.measure(w.robot[i], I.robot[i], w.robot[j], I.robot[j]);
+  for (const auto& [i, j] : I.self_pairs)
+    if (everything) q.measure(w.robot[i], I.robot[i], w.robot[j], I.robot[j]);
   for (size_t o = 0; o < I.objects.size(); ++o) {
+    for (size_t p = o + 1; p < I.objects.size(); ++p)
+      if (I.objects[p].index != I.objects[o].index && (involved(o) || involved(p)))
+        q.measure(w.objects[o], I.objects[o], w.objects[p], I.objects[p]);
+    if (!involved(o)) continue;
     for (size_t r = 0; r < I.robot.size(); ++r)
       if (!allowed.allows_object_link(I.objects[o].index, I.robot[r].link))
         q.measure(w.objects[o], I.objects[o], w.robot[r], I.robot[r]);
-    for (size_t p = o + 1; p < I.objects.size(); ++p)
-      if (I.objects[p].index != I.objects[o].index) q.measure(w.objects[o], I.objects[o], w.objects[p], I.objects[p]);
     against_world(w.objects[o], I.objects[o]);
   }
   return q.best;

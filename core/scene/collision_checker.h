@@ -83,6 +83,9 @@ public:
   // Smallest distance between any two bodies that are checked against each other.
   DistanceResult distance(const SceneState& state, CollisionData& data,
                           const AllowedContacts& allowed = {}) const;
+  // Smallest distance between one object and anything it is checked against.
+  DistanceResult object_distance(const SceneState& state, CollisionData& data, int object,
+                                 const AllowedContacts& allowed = {}) const;
 
   // Number of geometry pairs a full check considers (before any pruning).
   size_t pair_count() const;
@@ -91,6 +94,8 @@ public:
   struct Impl;
 
 private:
+  DistanceResult min_distance(const SceneState& state, CollisionData& data,
+                              const AllowedContacts& allowed, int only_object) const;
   const Scene& scene_;
   std::unique_ptr<Impl> impl_;
 };
