@@ -105,7 +105,7 @@ bool finite(const urdf::Pose& p) {
 class UrdfBuilder {
 public:
   UrdfBuilder(const std::string& source, const UrdfOptions& options)
-      : source_(source), options_(options), dir_(fs::path(source).parent_path()) {}
+      : source_(source), options_(options), dir_(fs::absolute(fs::path(source)).parent_path()) {}
 
   RobotModel build(const urdf::ModelInterface& urdf) {
     model_.name = urdf.getName();
@@ -220,7 +220,7 @@ private:
     if (uri.rfind(package, 0) == 0) {
       const std::string rest = uri.substr(package.size());
       for (const auto& dir : options_.package_paths) {
-        const fs::path p = fs::path(dir) / rest;
+        const fs::path p = fs::absolute(fs::path(dir) / rest);
         if (fs::exists(p)) return p.lexically_normal().string();
       }
       fail(where + " mesh '" + uri + "'", "not found in any package path");

@@ -500,8 +500,9 @@ TEST(Urdf, CollisionMeshesLoadedVisualMeshesOnRequest) {
         EXPECT_TRUE(fs::path(m.path).is_absolute());
         ASSERT_NE(m.mesh, nullptr);
         EXPECT_GT(m.mesh->triangles.size(), 0u);
-        if (fs::path(m.path).extension() == ".stl")
+        if (fs::path(m.path).extension() == ".stl") {
           EXPECT_EQ(m.mesh->triangles.size(), stl_triangle_count(m.path));
+        }
       }
       for (const auto& g : link.visuals) {
         if (!std::holds_alternative<demoplan::MeshShape>(g.shape)) continue;
@@ -567,6 +568,8 @@ TEST(Urdf, MeshCacheSharesMeshesAcrossModels) {
   EXPECT_NE(hand_mesh(load_robot(robots["panda"])), hand_mesh(load_robot(robots["ur5"])));
 }
 
+// Mesh paths must not depend on the working directory at load time: a visual mesh that was
+// not loaded is opened later, for drawing.
 TEST(Urdf, RelativeSourcePathStillGivesAbsoluteMeshPath) {
   // MeshShape::path is documented as "resolved, absolute". A URDF named by a relative path
   // (e.g. a command-line argument) must not leave cwd-relative mesh paths behind.
