@@ -15,6 +15,7 @@ struct Command {
   std::function<int()> run;
 };
 Command register_check_command(CLI::App& app);
+Command register_graph_command(CLI::App& app);
 
 // The benchmark data folder: --data-dir, else $DEMOPLAN_DATA_DIR, else the bundled copy.
 std::string default_data_dir();

@@ -1,6 +1,8 @@
 #include "core/model/inverse_kinematics.h"
 
+#include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/model/kinematics.h"
 
@@ -9,53 +11,78 @@ namespace demoplan {
 IkSolver::IkSolver(IkProblem problem, IkOptions options)
     : problem_(std::move(problem)), options_(options) {
   const RobotModel& m = *problem_.model;
-  for (int l = problem_.link; m.links[l].parent_joint >= 0; l = m.joints[m.links[l].parent_joint].parent_link)
-    chain_.insert(chain_.begin(), m.links[l].parent_joint);
-  column_of_.assign(m.nq, -1);
-  for (size_t c = 0; c < problem_.active.size(); ++c) column_of_[problem_.active[c]] = static_cast<int>(c);
+  std::vector<int> joints;
+  for (int l = problem_.link; l != problem_.root_link; l = m.joints[m.links[l].parent_joint].parent_link) {
+    if (m.links[l].parent_joint < 0) throw std::invalid_argument("IkProblem: root_link is not an ancestor of link");
+    joints.insert(joints.begin(), m.links[l].parent_joint);
+  }
+  if (problem_.active.size() > static_cast<size_t>(kMaxJoints))
+    throw std::invalid_argument("IkProblem: more than " + std::to_string(kMaxJoints) + " active joints");
+  std::vector<int> column_of(m.nq, -1);
+  for (size_t c = 0; c < problem_.active.size(); ++c) column_of[problem_.active[c]] = static_cast<int>(c);
+  // Fold fixed joints into the next moving joint's origin; the tail goes into the frame.
+  Pose pending = Pose::Identity();
+  for (int j : joints) {
+    const Joint& joint = m.joints[j];
+    pending = pending * joint.origin;
+    if (joint.q_index < 0) continue;
+    chain_.push_back({pending.linear(), pending.translation(), joint.axis, joint.q_index,
+                      column_of[joint.q_index], joint.type == JointType::Prismatic});
+    pending = Pose::Identity();
+  }
+  tail_ = pending * problem_.link_T_frame;
   lower_ = m.lower_limits();
   upper_ = m.upper_limits();
 }
 
-Pose IkSolver::frame_pose(const Eigen::VectorXd& q) const {
-  const RobotModel& m = *problem_.model;
-  Pose T = problem_.base;
-  for (int j : chain_) {
-    const Joint& joint = m.joints[j];
-    T = joint.q_index < 0 ? T * joint.origin : T * joint.origin * joint_motion(joint, q[joint.q_index]);
+// Walks the chain with plain 3x3 matrices (cheaper than composing Isometry3d); records the
+// world axis and origin of every active joint when `axes` is given.
+template <typename AxisSink>
+Pose IkSolver::evaluate(const Eigen::VectorXd& q, AxisSink&& sink) const {
+  Eigen::Matrix3d R = problem_.base.linear();
+  Eigen::Vector3d p = problem_.base.translation();
+  for (const ChainJoint& c : chain_) {
+    p += R * c.p;
+    R = R * c.R;
+    const Eigen::Vector3d w = R * c.axis;
+    sink(c, w, p);
+    const double v = q[c.q_index];
+    if (c.prismatic) {
+      p += v * w;
+    } else {
+      R = R * Eigen::AngleAxisd(v, c.axis).toRotationMatrix();
+    }
   }
-  return T * problem_.link_T_frame;
+  Pose F = Pose::Identity();
+  F.translation() = p + R * tail_.translation();
+  F.linear() = R * tail_.linear();
+  return F;
+}
+
+Pose IkSolver::frame_pose(const Eigen::VectorXd& q) const {
+  return evaluate(q, [](const ChainJoint&, const Eigen::Vector3d&, const Eigen::Vector3d&) {});
 }
 
 // e = (target position - position, log3(R_target R^T)) in world coordinates; J maps active
 // joint velocities to the frame's world linear and angular velocity.
 void IkSolver::residual(const Eigen::VectorXd& q, const Pose& target, Vector6d& e,
-                        Eigen::MatrixXd* J) const {
-  const RobotModel& m = *problem_.model;
+                        Jacobian* J) const {
   struct Axis {
     Eigen::Vector3d direction, origin;
     int column;
     bool prismatic;
   };
-  thread_local std::vector<Axis> axes;
-  axes.clear();
-  Pose T = problem_.base;
-  for (int j : chain_) {
-    const Joint& joint = m.joints[j];
-    T = T * joint.origin;
-    if (joint.q_index >= 0) {
-      if (column_of_[joint.q_index] >= 0)
-        axes.push_back({T.linear() * joint.axis, T.translation(), column_of_[joint.q_index],
-                        joint.type == JointType::Prismatic});
-      T = T * joint_motion(joint, q[joint.q_index]);
-    }
-  }
-  const Pose F = T * problem_.link_T_frame;
+  std::array<Axis, kMaxJoints> axes;
+  int count = 0;
+  const Pose F = evaluate(q, [&](const ChainJoint& c, const Eigen::Vector3d& w, const Eigen::Vector3d& p) {
+    if (c.column >= 0 && J) axes[count++] = {w, p, c.column, c.prismatic};
+  });
   e.head<3>() = target.translation() - F.translation();
   e.tail<3>() = log3(target.linear() * F.linear().transpose());
   if (!J) return;
   J->setZero(6, static_cast<long>(problem_.active.size()));
-  for (const Axis& a : axes) {
+  for (int k = 0; k < count; ++k) {
+    const Axis& a = axes[k];
     if (a.prismatic) {
       J->col(a.column).head<3>() = a.direction;
     } else {
@@ -66,8 +93,8 @@ void IkSolver::residual(const Eigen::VectorXd& q, const Pose& target, Vector6d& 
 }
 
 bool IkSolver::descend(const Pose& target, Eigen::VectorXd& q, IkResult& result) const {
-  Vector6d e;
-  Eigen::MatrixXd J;
+  Vector6d e, e2;
+  Jacobian J, J2;
   residual(q, target, e, &J);
   double err = e.squaredNorm();
   double lambda = options_.initial_damping;
@@ -79,7 +106,7 @@ bool IkSolver::descend(const Pose& target, Eigen::VectorXd& q, IkResult& result)
     // dq = J^T (J J^T + lambda I)^-1 e: 6x6 solve whatever the number of joints.
     Eigen::Matrix<double, 6, 6> A = J * J.transpose();
     A.diagonal().array() += lambda;
-    Eigen::VectorXd dq = J.transpose() * A.ldlt().solve(e);
+    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxJoints, 1> dq = J.transpose() * A.ldlt().solve(e);
     // A bounded step keeps the linearisation honest far from the target.
     if (const double norm = dq.norm(); norm > options_.max_step) dq *= options_.max_step / norm;
     candidate = q;
@@ -87,12 +114,10 @@ bool IkSolver::descend(const Pose& target, Eigen::VectorXd& q, IkResult& result)
       const int i = problem_.active[c];
       candidate[i] = std::clamp(q[i] + dq[c], lower_[i], upper_[i]);
     }
-    Vector6d e2;
-    Eigen::MatrixXd J2;
     residual(candidate, target, e2, &J2);
     const double err2 = e2.squaredNorm();
     if (err2 < err) {
-      q = candidate, e = e2, J = std::move(J2), err = err2;
+      q = candidate, e = e2, J = J2, err = err2;
       lambda = std::max(lambda * 0.1, 1e-9);
     } else {
       lambda *= 10.0;

@@ -1,1 +1,254 @@
+// The CLI as a user runs it: the real demoplan-cli binary, its exit codes, its one JSON object
+// on stdout, and its one-line errors on stderr.
 #include <gtest/gtest.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void write_text(const fs::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary | std::ios::trunc);
+  out << text;
+  if (!out) throw std::runtime_error("test setup: cannot write " + p.string());
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+std::vector<std::string> lines(const std::string& s) {
+  std::vector<std::string> out;
+  std::istringstream in(s);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+fs::path make_temp_dir(const std::string& prefix) {
+  std::string tmpl = (fs::temp_directory_path() / (prefix + "XXXXXX")).string();
+  if (!mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed");
+  return tmpl;
+}
+
+struct Result {
+  int code = -1;  // exit status; -1 when the process did not exit normally (crash)
+  std::string out, err;
+};
+
+class Cli : public ::testing::Test {
+protected:
+  void SetUp() override { work_ = make_temp_dir("demoplan_test_cli_"); }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(work_, ec);
+  }
+  static void TearDownTestSuite() {
+    if (!broken_root_.empty()) {
+      std::error_code ec;
+      fs::remove_all(broken_root_, ec);
+      broken_root_.clear();
+    }
+  }
+
+  // Runs demoplan-cli with `args`; `env` is prepended to the command ("NAME=value ").
+  Result run(const std::vector<std::string>& args, const std::string& env = "") const {
+    std::string cmd = env + shell_quote(DEMOPLAN_CLI);
+    for (const auto& a : args) cmd += " " + shell_quote(a);
+    const fs::path out = work_ / "stdout", err = work_ / "stderr";
+    cmd += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
+    const int status = std::system(cmd.c_str());
+    Result r;
+    r.code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
+    r.out = read_text(out);
+    r.err = read_text(err);
+    return r;
+  }
+
+  static std::vector<std::string> check_args(const std::string& task, const std::string& robot,
+                                             const std::string& pose = "0") {
+    return {"check", "--task", task, "--robot", robot, "--pose", pose, "--json", "--seconds", "0.2",
+            "--data-dir", DEMOPLAN_DATA_DIR};
+  }
+
+  // stdout must be exactly one JSON object on one line.
+  static Json parse_one_object(const Result& r) {
+    EXPECT_EQ(lines(r.out).size(), 1u) << "stdout:\n" << r.out;
+    Json j;
+    try {
+      j = Json::parse(r.out);  // throws on anything after the first value
+    } catch (const Json::exception& e) {
+      ADD_FAILURE() << "stdout is not one JSON value: " << e.what() << "\n" << r.out;
+      return Json::object();
+    }
+    EXPECT_TRUE(j.is_object()) << r.out;
+    for (const char* key : {"dof", "links", "collision_pairs", "start_collision_free",
+                            "goal_collision_free", "checks_per_second"})
+      EXPECT_TRUE(j.contains(key)) << "missing key " << key << " in " << r.out;
+    return j;
+  }
+
+  // A copy of the benchmark data whose shelf_1.json has one frame too few in objects_poses[1];
+  // made on first use, shared by the suite.
+  static std::string broken_data_dir() {
+    if (broken_root_.empty()) {
+      broken_root_ = make_temp_dir("demoplan_test_cli_data_");
+      const fs::path data = broken_root_ / "gtamp";
+      fs::copy(DEMOPLAN_DATA_DIR, data, fs::copy_options::recursive);
+      const fs::path task = data / "tasks" / "shelf_1.json";
+      Json j = Json::parse(read_text(task));
+      j["objects_poses"][1].erase(j["objects_poses"][1].size() - 1);
+      write_text(task, j.dump(1));
+    }
+    return (broken_root_ / "gtamp").string();
+  }
+
+  // A bad-input failure: exit 2, nothing on stdout, one line on stderr containing every part.
+  static void expect_bad_input(const Result& r, const std::vector<std::string>& parts) {
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_TRUE(r.out.empty()) << "stdout: " << r.out;
+    EXPECT_EQ(lines(r.err).size(), 1u) << "stderr:\n" << r.err;
+    for (const auto& p : parts) EXPECT_NE(r.err.find(p), std::string::npos) << "'" << p << "' not in: " << r.err;
+  }
+
+  fs::path work_;
+  static inline fs::path broken_root_;
+};
+
+TEST_F(Cli, ShelfPandaIsCollisionFree) {
+  const Result r = run(check_args("shelf_1", "panda"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = parse_one_object(r);
+  EXPECT_EQ(j.value("dof", -1), 9);
+  EXPECT_EQ(j.value("links", -1), 12);
+  EXPECT_GT(j.value("collision_pairs", 0), 0);
+  EXPECT_EQ(j.value("start_collision_free", false), true);
+  EXPECT_EQ(j.value("goal_collision_free", false), true);
+  EXPECT_GT(j.value("checks_per_second", 0.0), 0.0);
+  // The human summary goes to stderr.
+  EXPECT_NE(r.err.find("shelf_1"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, ShelfUr5) {
+  const Result r = run(check_args("shelf_1", "ur5"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = parse_one_object(r);
+  EXPECT_EQ(j.value("dof", -1), 8);
+  EXPECT_GT(j.value("collision_pairs", 0), 0);
+  EXPECT_EQ(j.value("start_collision_free", false), true);
+  EXPECT_EQ(j.value("goal_collision_free", false), true);
+}
+
+TEST_F(Cli, WaiterKmrIiwa) {
+  const Result r = run(check_args("waiter_0", "kmr_iiwa"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = parse_one_object(r);
+  EXPECT_EQ(j.value("dof", -1), 12);
+  EXPECT_GT(j.value("collision_pairs", 0), 0);
+  EXPECT_EQ(j.value("start_collision_free", false), true);
+  EXPECT_EQ(j.value("goal_collision_free", false), true);
+}
+
+TEST_F(Cli, WithoutJsonStdoutIsEmpty) {
+  const Result r = run({"check", "--task", "shelf_1", "--robot", "panda", "--pose", "0", "--seconds",
+                        "0.2", "--data-dir", DEMOPLAN_DATA_DIR});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_NE(r.err.find("collision-free"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, TestTaskStartsInCollision) {
+  // test_0: identity poses everywhere, the two cuboids inside each other (and the robot in the
+  // tunnel): the job runs and fails.
+  const Result r = run(check_args("test_0", "panda"));
+  EXPECT_EQ(r.code, 1) << r.err;
+  const Json j = parse_one_object(r);
+  EXPECT_EQ(j.value("start_collision_free", true), false);
+  EXPECT_EQ(j.value("dof", -1), 9);
+  EXPECT_TRUE(j.contains("start_collision")) << r.out;
+}
+
+TEST_F(Cli, BrokenTaskFileInDataDir) {
+  const std::string dir = broken_data_dir();
+  const Result r = run({"check", "--task", "shelf_1", "--robot", "panda", "--pose", "0", "--json",
+                        "--seconds", "0.2", "--data-dir", dir});
+  expect_bad_input(r, {(fs::path(dir) / "tasks" / "shelf_1.json").string(), "objects_poses[1]"});
+}
+
+TEST_F(Cli, BrokenTaskFileFromEnvironment) {
+  // Without --data-dir, $DEMOPLAN_DATA_DIR chooses the data.
+  const std::string dir = broken_data_dir();
+  const Result r = run({"check", "--task", "shelf_1", "--robot", "panda", "--json", "--seconds", "0.2"},
+                       "DEMOPLAN_DATA_DIR=" + shell_quote(dir) + " ");
+  expect_bad_input(r, {(fs::path(dir) / "tasks" / "shelf_1.json").string(), "objects_poses[1]"});
+}
+
+TEST_F(Cli, UnknownTask) {
+  const Result r = run(check_args("cupboard_3", "panda"));
+  expect_bad_input(r, {"cupboard_3.json", "shelf_1", "waiter_0"});
+}
+
+TEST_F(Cli, UnknownRobot) {
+  const Result r = run(check_args("shelf_1", "r2d2"));
+  expect_bad_input(r, {"robots.json", "r2d2", "panda"});
+}
+
+TEST_F(Cli, RobotWithoutPosesForTheTask) {
+  const Result r = run(check_args("waiter_0", "panda"));
+  expect_bad_input(r, {"waiter_0.json", "robot_poses", "panda"});
+}
+
+TEST_F(Cli, UnknownPoseId) {
+  const Result r = run(check_args("shelf_1", "panda", "42"));
+  expect_bad_input(r, {"shelf_1_panda_poses.json", "poses", "42"});
+}
+
+TEST_F(Cli, UnknownOption) {
+  const Result r = run({"check", "--task", "shelf_1", "--bogus"});
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_NE(r.err.find("--bogus"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, NoSubcommand) {
+  const Result r = run({});
+  EXPECT_EQ(r.code, 2) << r.err;
+}
+
+TEST_F(Cli, NonNumericPose) {
+  const Result r = run({"check", "--task", "shelf_1", "--pose", "first", "--seconds", "0.2"});
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("--pose"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, DataDirThatDoesNotExist) {
+  const Result r = run({"check", "--task", "shelf_1", "--seconds", "0.2", "--data-dir",
+                        (work_ / "no_such_dir").string()});
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("no_such_dir"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, HelpExitsZero) {
+  const Result r = run({"check", "--help"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE((r.out + r.err).find("--task"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,116 @@
+// demoplan-cli graph: the states and transitions a demonstration gives, and how well each
+// transition can be sampled (projection) and sampled collision-free.
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli/command.h"
+#include "app/cli/task_inputs.h"
+#include "core/graph/graph_description.h"
+#include "core/graph/projector.h"
+#include "core/graph/state_validity.h"
+
+namespace demoplan::cli {
+
+namespace {
+
+struct GraphOptions {
+  TaskInputs inputs;
+  int samples = 20;
+  unsigned seed = 1;
+  bool json = false;
+};
+
+int run_graph(const GraphOptions& o) {
+  const LoadedTask t = load_task_inputs(o.inputs);
+  const ConstraintGraph graph = build_constraint_graph(t.scene, t.demo);
+  const ConstraintProjector projector(t.scene, graph);
+  const CollisionChecker checker(t.scene);
+  const StateValidity validity(t.scene, graph, checker);
+  auto data = checker.make_data();
+  std::mt19937_64 rng(o.seed);
+
+  struct Stats {
+    int projected = 0, collision_free = 0;
+    std::map<std::string, int> failures;
+  };
+  std::vector<Stats> stats(graph.transitions.size());
+  double projection_time = 0.0;
+  int total_projected = 0, total_free = 0;
+  for (size_t i = 0; i < graph.transitions.size(); ++i) {
+    for (int k = 0; k < o.samples; ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const TransitionSample s = projector.sample_on_transition(static_cast<int>(i), rng);
+      projection_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (!s.ok) {
+        ++stats[i].failures[s.failure.substr(0, s.failure.find(" ("))];
+        continue;
+      }
+      ++stats[i].projected;
+      CollisionPair hit;
+      if (validity.transition_free(s, data, &hit)) ++stats[i].collision_free;
+      else ++stats[i].failures["in collision: " + hit.first + " / " + hit.second];
+    }
+    total_projected += stats[i].projected;
+    total_free += stats[i].collision_free;
+  }
+  const int total = o.samples * static_cast<int>(graph.transitions.size());
+  const double success_rate = total ? static_cast<double>(total_projected) / total : 0.0;
+  const double per_second = projection_time > 0 ? total_projected / projection_time : 0.0;
+
+  std::cerr << t.scene.name << ", demonstration from " << o.inputs.from << "\n"
+            << describe_graph_text(t.scene, graph) << "sampling " << o.samples << " per transition:\n";
+  for (size_t i = 0; i < graph.transitions.size(); ++i) {
+    std::cerr << "  " << graph.transitions[i].name << ": projected " << stats[i].projected << "/" << o.samples
+              << ", collision-free " << stats[i].collision_free << "/" << o.samples << "\n";
+    for (const auto& [why, n] : stats[i].failures) std::cerr << "      " << n << "x " << why << "\n";
+  }
+  std::cerr << "projection success " << success_rate * 100 << " %, " << static_cast<long>(per_second)
+            << " successful projections/s, collision-free " << total_free << "/" << total << "\n";
+
+  bool every_transition_free = true;
+  for (const auto& s : stats) every_transition_free &= s.collision_free > 0;
+  if (o.json) {
+    nlohmann::json d = describe_graph(t.scene, graph);
+    nlohmann::json placements = nlohmann::json::array(), grasps = nlohmann::json::array();
+    for (const auto& s : d["states"]) (s["kind"] == "placement" ? placements : grasps).push_back(s);
+    nlohmann::json transitions = d["transitions"];
+    for (size_t i = 0; i < transitions.size(); ++i) {
+      transitions[i]["samples"] = o.samples;
+      transitions[i]["success_rate"] = static_cast<double>(stats[i].projected) / o.samples;
+      transitions[i]["collision_free_rate"] = static_cast<double>(stats[i].collision_free) / o.samples;
+      transitions[i]["failures"] = stats[i].failures;
+    }
+    std::cout << nlohmann::json{{"task", o.inputs.task},
+                                {"robot", o.inputs.robot},
+                                {"pose", o.inputs.pose},
+                                {"from", o.inputs.from},
+                                {"placement_states", placements},
+                                {"grasp_states", grasps},
+                                {"transitions", transitions},
+                                {"start", d["start"]},
+                                {"goal", d["goal"]},
+                                {"projection_success_rate", success_rate},
+                                {"projections_per_second", per_second},
+                                {"collision_free_rate", total ? static_cast<double>(total_free) / total : 0.0}}
+                     .dump()
+              << std::endl;
+  }
+  return every_transition_free ? kOk : kFailed;
+}
+
+}  // namespace
+
+Command register_graph_command(CLI::App& app) {
+  auto opts = std::make_shared<GraphOptions>();
+  CLI::App* sub = app.add_subcommand("graph", "build the states and transitions of a demonstration and sample them");
+  add_task_inputs(*sub, opts->inputs);
+  sub->add_option("--samples", opts->samples, "samples per transition")->check(CLI::PositiveNumber)->capture_default_str();
+  sub->add_option("--seed", opts->seed, "random seed")->capture_default_str();
+  sub->add_flag("--json", opts->json, "print one JSON object on stdout");
+  return {sub, [opts] { return run_graph(*opts); }};
+}
+
+}  // namespace demoplan::cli

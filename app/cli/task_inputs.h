@@ -1,0 +1,29 @@
+#pragma once
+// The options every task-level subcommand shares (--task, --robot, --pose, --from, --data-dir)
+// and what they load.
+#include <string>
+
+#include "app/cli/command.h"
+#include "core/demo/benchmark_scene.h"
+#include "core/demo/demonstration.h"
+
+namespace demoplan::cli {
+
+struct TaskInputs {
+  std::string task = "shelf_1";
+  std::string robot = "panda";
+  int pose = 0;
+  std::string from = "subgoals";  // raw | subgoals
+  std::string data_dir;
+};
+
+struct LoadedTask {
+  BenchmarkTask task;
+  Scene scene;
+  Demonstration demo;
+};
+
+void add_task_inputs(CLI::App& sub, TaskInputs& inputs, bool with_from = true);
+LoadedTask load_task_inputs(const TaskInputs& inputs);
+
+}  // namespace demoplan::cli

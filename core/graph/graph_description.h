@@ -1,0 +1,19 @@
+#pragma once
+// A read-only description of a constraint graph for the UI and logs: its states, its
+// transitions, and the constraints each state imposes, in words and numbers.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/graph/constraint_graph.h"
+
+namespace demoplan {
+
+// {"states": [{"name", "kind", "constraints": [..]}], "transitions": [{"name", "kind", "from",
+//  "to", "object", "handle", "approach_state"}], "start", "goal"}. Positions in metres, angles
+// in degrees (roll, pitch, yaw as URDF writes them).
+nlohmann::json describe_graph(const Scene& scene, const ConstraintGraph& graph);
+
+// The same as indented text, one state or transition a line.
+std::string describe_graph_text(const Scene& scene, const ConstraintGraph& graph);
+
+}  // namespace demoplan
