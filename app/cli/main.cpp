@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    std::cerr << "error: " << e.what() << " (see --help)\n";  // one line, as every bad input
     return kBadInput;
   }
   try {

@@ -26,8 +26,9 @@ JsonField robot_entry(const Json& json, const std::string& file, const std::stri
 // spans |height| (it only matters for objects and moving links). A zero-size box is omitted.
 bool add_support_box(const JsonField& entry, const std::string& name, Scene& scene) {
   const Pose pose = entry["pose"].pose();
-  const Eigen::Vector3d size = entry["size"].vector().cwiseAbs();
-  if (size.size() != 3) entry["size"].fail("must have 3 entries");
+  const Eigen::VectorXd raw = entry["size"].vector();
+  if (raw.size() != 3) entry["size"].fail("must have 3 entries");
+  const Eigen::Vector3d size = raw.cwiseAbs();
   if ((size.array() <= 0).any()) return false;
   SceneFurniture box;
   box.name = name;
@@ -124,9 +125,10 @@ Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_
   robot.fixed_base = info.fixed_base;
   robot.initial_configuration = info.initial_configuration;
   if (robot.initial_configuration.size() != robot.model.nq)
-    throw InputError(info.urdf, "", "robots.json initial_configuration of '" + robot_name + "' has " +
-                                        std::to_string(robot.initial_configuration.size()) +
-                                        " entries, the URDF " + std::to_string(robot.model.nq) + " joints");
+    throw InputError((fs::path(task.data_dir) / "robots" / "robots.json").string(),
+                     "robots." + robot_name + ".initial_configuration",
+                     "has " + std::to_string(robot.initial_configuration.size()) + " entries, " + info.urdf +
+                         " has " + std::to_string(robot.model.nq) + " joints");
   if (robot.srdf.grippers.empty()) throw InputError(info.srdf, "gripper", "robot has no gripper");
   robot.gripper_link = robot.model.link_index(robot.gripper().link);
   if (robot.gripper_link < 0)

@@ -15,7 +15,8 @@ namespace {
 
 std::string data_path(const std::string& data_dir, const JsonField& f) {
   const fs::path p = fs::path(data_dir) / f.string();
-  if (!fs::exists(p)) f.fail("file not found: " + p.string());
+  std::error_code ec;
+  if (!fs::exists(p, ec)) f.fail("file not found: " + p.string());
   return p.lexically_normal().string();
 }
 
@@ -37,7 +38,8 @@ BenchmarkTask load_benchmark_task(const std::string& data_dir, const std::string
   BenchmarkTask task;
   task.data_dir = data_dir;
   task.file = (fs::path(data_dir) / "tasks" / (name + ".json")).string();
-  if (!fs::exists(task.file)) {
+  std::error_code ec;
+  if (!fs::exists(task.file, ec)) {
     std::string known;
     for (const auto& t : list_benchmark_tasks(data_dir)) known += (known.empty() ? "" : ", ") + t;
     throw InputError(task.file, "", "no such task '" + name + "' (known: " + known + ")");

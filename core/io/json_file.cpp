@@ -1,7 +1,9 @@
 #include "core/io/json_file.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 
@@ -74,7 +76,14 @@ double JsonField::number() const {
 
 int JsonField::integer() const {
   if (!value_->is_number_integer()) fail("must be an integer");
-  return value_->get<int>();
+  if (value_->is_number_unsigned()) {
+    const auto v = value_->get<std::uint64_t>();
+    if (v > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) fail("is out of range");
+    return static_cast<int>(v);
+  }
+  const auto v = value_->get<std::int64_t>();
+  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) fail("is out of range");
+  return static_cast<int>(v);
 }
 
 bool JsonField::boolean() const {

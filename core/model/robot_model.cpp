@@ -3,6 +3,7 @@
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -81,10 +82,15 @@ namespace {
 // urdfdom reports parse errors through console_bridge; keep the last one for our message.
 class CapturingHandler : public console_bridge::OutputHandler {
 public:
+  // urdfdom logs the low-level cause first ("Unable to parse component [nan]"), then where it
+  // was ("... of joint [j]"), then generic follow-ups: keep them all, in order, on one line.
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
-    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) last_error = text;
+    if (level < console_bridge::CONSOLE_BRIDGE_LOG_ERROR) return;
+    std::string line = text;
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    if (errors.find(line) == std::string::npos) errors += (errors.empty() ? "" : "; ") + line;
   }
-  std::string last_error;
+  std::string errors;
 };
 
 Pose to_pose(const urdf::Pose& p) {
@@ -301,13 +307,12 @@ RobotModel parse_urdf(const std::string& xml, const std::string& source_path,
     try {
       urdf = urdf::parseURDF(xml);
     } catch (const std::exception& e) {
-      handler.last_error = e.what();
+      if (handler.errors.empty()) handler.errors = e.what();
     }
     console_bridge::restorePreviousOutputHandler();
-    if (!urdf) {
-      std::string reason = handler.last_error.empty() ? "not a valid URDF" : handler.last_error;
-      for (auto& c : reason)
-        if (c == '\n') c = ' ';
+    // urdfdom drops an element it cannot parse and still returns a model: any logged error fails.
+    if (!urdf || !handler.errors.empty()) {
+      std::string reason = handler.errors.empty() ? "not a valid URDF" : handler.errors;
       throw InputError(source_path, "URDF", reason);
     }
   }

@@ -47,7 +47,7 @@ public:
     TiXmlDocument doc;
     doc.Parse(xml.c_str());
     if (doc.Error()) {
-      fail("line " + std::to_string(doc.ErrorRow()), std::string("XML error: ") + doc.ErrorDesc());
+      fail(doc.ErrorRow() > 0 ? "line " + std::to_string(doc.ErrorRow()) : "", std::string("XML error: ") + doc.ErrorDesc());
     }
     const TiXmlElement* robot = doc.RootElement();
     if (!robot || std::string(robot->Value()) != "robot") fail("", "root element must be <robot>");
@@ -130,8 +130,11 @@ private:
     for (size_t i = 0; i < pts.size(); i += 3) c.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);
     const auto shape = numbers(e.FirstChildElement("shape"), where + " shape");
     for (size_t i = 0; i < shape.size();) {
-      const int n = static_cast<int>(shape[i]);
-      if (n < 3 || shape[i] != n || i + 1 + n > shape.size())
+      const double count = shape[i];
+      if (!(count >= 3) || count != std::floor(count) || count > static_cast<double>(shape.size() - i - 1))
+        fail(where + " shape", "each polygon is N >= 3 followed by N vertex indices");
+      const int n = static_cast<int>(count);
+      if (i + 1 + static_cast<size_t>(n) > shape.size())
         fail(where + " shape", "each polygon is N >= 3 followed by N vertex indices");
       auto& poly = c.polygons.emplace_back();
       for (int k = 0; k < n; ++k) {

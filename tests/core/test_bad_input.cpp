@@ -152,7 +152,7 @@ TEST_F(BadUrdf, RevoluteJointWithoutLimits) {
       replace_once(panda_urdf(),
                    R"(<limit effort="87" lower="-3.1416" upper="0.0" velocity="2.1750"/>)", ""));
   const std::string what = input_error([&] { load_urdf(file); });
-  expect_mentions(what, {file, "URDF"});  // the joint's name: see DISABLED_UrdfdomErrorsNameTheJoint
+  expect_mentions(what, {file, "URDF"});  // the joint's name: see UrdfdomErrorsNameTheJoint
 }
 
 TEST_F(BadUrdf, NanInJointOrigin) {
@@ -177,7 +177,7 @@ TEST_F(BadUrdf, InfInJointOrigin) {
 // not specify limits", "Malformed parent origin element for joint [panda_joint1]") and then a
 // generic "joint xml is not initialized correctly"; parse_urdf keeps only the last one, so the
 // message does not say which joint. Enable once robot_model.cpp keeps the first error.
-TEST_F(BadUrdf, DISABLED_UrdfdomErrorsNameTheJoint) {
+TEST_F(BadUrdf, UrdfdomErrorsNameTheJoint) {
   const std::string no_limit = write_panda_file(
       "no_limit_named.urdf",
       replace_once(panda_urdf(),
@@ -193,7 +193,7 @@ TEST_F(BadUrdf, DISABLED_UrdfdomErrorsNameTheJoint) {
 // urdfdom drops a <collision> it cannot parse (it only logs "Could not parse collision element
 // for Link [base_link]") and returns a model: the object then loads with no collision geometry.
 // Enable once parse_urdf treats any error logged by urdfdom as an InputError.
-TEST_F(BadUrdf, DISABLED_MalformedCollisionOriginIsAnError) {
+TEST_F(BadUrdf, MalformedCollisionOriginIsAnError) {
   // 1e999 does not fit a double.
   const std::string text = replace_once(read_text(cuboid_urdf_path()),
                                         R"(<origin xyz="0 0 0" rpy="0 0 0" />
@@ -669,7 +669,7 @@ TEST_F(BadTask, NegativeObjectCount) {
 
 // JsonField::integer() converts with get<int>() after is_number_integer(), which also accepts
 // values beyond int: 2^32 + 150 wraps to 150 and the task loads. Enable once it range-checks.
-TEST_F(BadTask, DISABLED_FrameCountBeyondInt) {
+TEST_F(BadTask, FrameCountBeyondInt) {
   // 2^32 + 150 must not wrap around to the real frame count 150.
   Json j = task_json();
   j["T"] = 4294967446ULL;
@@ -734,7 +734,7 @@ TEST_F(BadTask, UnknownTaskListsTheKnownOnes) {
 
 // fs::exists(task.file) throws std::filesystem::filesystem_error (ENAMETOOLONG), so the CLI
 // reports exit 1 instead of 2. Enable once load_benchmark_task uses the error_code overload.
-TEST_F(BadTask, DISABLED_OverlongTaskName) {
+TEST_F(BadTask, OverlongTaskName) {
   // The file name exceeds NAME_MAX: still bad input, not a filesystem exception.
   const std::string name(300, 'x');
   const std::string what = input_error([&] { load_benchmark_task(data_dir(), name); });
@@ -801,7 +801,7 @@ TEST_F(BadScene, BadRobotBasePose) {
 // add_support_box assigns the size vector to an Eigen::Vector3d before checking its length, so
 // the check is dead and a 2-entry size reads past the buffer (undefined behaviour; an Eigen
 // assertion in Debug builds). Enable once benchmark_scene.cpp checks the size first.
-TEST_F(BadScene, DISABLED_SupportBoxSizeOfTwo) {
+TEST_F(BadScene, SupportBoxSizeOfTwo) {
   const fs::path file = data_ / "tasks" / "shelf_1_panda_poses.json";
   const std::string original = read_text(file);
   struct Restore {

@@ -1,0 +1,81 @@
+#include "core/demo/rest_pose.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace demoplan {
+
+Pose robust_static_pose(const PoseList& samples, double inlier_angle) {
+  const size_t n = samples.size();
+  Pose out = Pose::Identity();
+  if (n == 0) return out;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<double> v;
+    for (const auto& s : samples) v.push_back(s.translation()[k]);
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(n / 2), v.end());
+    out.translation()[k] = v[n / 2];
+  }
+  std::vector<Eigen::Quaterniond> q;
+  for (const auto& s : samples) q.emplace_back(Eigen::Quaterniond(s.linear()).normalized());
+  size_t medoid = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < n; ++i) {
+    double sum = 0;
+    for (size_t j = 0; j < n; ++j) sum += q[i].angularDistance(q[j]);
+    if (sum < best) best = sum, medoid = i;
+  }
+  Eigen::Vector4d acc = Eigen::Vector4d::Zero();
+  for (size_t i = 0; i < n; ++i) {
+    if (q[medoid].angularDistance(q[i]) > inlier_angle) continue;
+    const double sign = q[medoid].dot(q[i]) < 0 ? -1.0 : 1.0;  // same hemisphere
+    acc += sign * q[i].coeffs();
+  }
+  out.linear() = Eigen::Quaterniond(acc.normalized()).toRotationMatrix();
+  return out;
+}
+
+namespace {
+Eigen::Vector3d centroid(const std::vector<Eigen::Vector3d>& pts) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const auto& p : pts) c += p;
+  return c / static_cast<double>(pts.size());
+}
+}  // namespace
+
+std::optional<SnapResult> snap_to_support(const std::vector<std::vector<Eigen::Vector3d>>& faces,
+                                          const Pose& pose,
+                                          const std::vector<std::vector<Eigen::Vector3d>>& supports,
+                                          const SnapOptions& options) {
+  std::optional<SnapResult> best;
+  double best_score = std::numeric_limits<double>::infinity();
+  for (size_t s = 0; s < supports.size(); ++s) {
+    const PolygonPlane plane = polygon_plane(supports[s]);
+    for (size_t f = 0; f < faces.size(); ++f) {
+      std::vector<Eigen::Vector3d> w;
+      for (const auto& v : faces[f]) w.push_back(pose * v);
+      // The face rests on the support when its outward normal points against the support's.
+      const Eigen::Vector3d face_normal = polygon_plane(w).normal;
+      const double tilt = std::acos(std::clamp(-face_normal.dot(plane.normal), -1.0, 1.0));
+      const Eigen::Vector3d c = centroid(w);
+      const double distance = (c - plane.origin).dot(plane.normal);
+      if (tilt > options.max_tilt || std::abs(distance) > options.max_distance) continue;
+      if (!projects_inside(plane, supports[s], c)) continue;
+      const double score = tilt + std::abs(distance) * 10.0;  // 1 cm weighs like 0.1 rad
+      if (score >= best_score) continue;
+      best_score = score;
+      // Rotate about the face centroid so the face normal becomes -n, then set the height.
+      const Eigen::Matrix3d align =
+          Eigen::Quaterniond::FromTwoVectors(face_normal, -plane.normal).toRotationMatrix();
+      Pose corrected = pose;
+      corrected.linear() = align * pose.linear();
+      corrected.translation() = c + align * (pose.translation() - c);
+      const Eigen::Vector3d c2 = corrected * centroid(faces[f]);
+      const double h = (c2 - plane.origin).dot(plane.normal);
+      corrected.translation() += (options.gap - h) * plane.normal;
+      best = SnapResult{corrected, static_cast<int>(s), static_cast<int>(f), tilt, options.gap - h};
+    }
+  }
+  return best;
+}
+
+}  // namespace demoplan
