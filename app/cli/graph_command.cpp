@@ -8,6 +8,7 @@
 
 #include "app/cli/command.h"
 #include "app/cli/task_inputs.h"
+#include "core/demo/benchmark_demonstration.h"
 #include "core/graph/graph_description.h"
 #include "core/graph/projector.h"
 #include "core/graph/state_validity.h"
@@ -60,6 +61,20 @@ int run_graph(const GraphOptions& o) {
   const double success_rate = total ? static_cast<double>(total_projected) / total : 0.0;
   const double per_second = projection_time > 0 ? total_projected / projection_time : 0.0;
 
+  nlohmann::json deviation;
+  if (o.inputs.from == "raw") {
+    // How far the poses estimated from the video lie from the cleaned ones.
+    const Demonstration clean = demonstration_from_benchmark(t.task, t.scene, PoseSource::Subgoals);
+    const PoseDeviation d = pose_deviation(t.demo, clean);
+    deviation = {{"pairs", d.pairs},
+                 {"median_translation_mm", d.median_translation_mm},
+                 {"max_translation_mm", d.max_translation_mm},
+                 {"median_rotation_deg", d.median_rotation_deg},
+                 {"max_rotation_deg", d.max_rotation_deg}};
+    std::cerr << "raw poses vs subgoals over " << d.pairs << " (event, object) pairs: median " << d.median_translation_mm
+              << " mm / " << d.median_rotation_deg << " deg, max " << d.max_translation_mm << " mm / "
+              << d.max_rotation_deg << " deg\n";
+  }
   std::cerr << t.scene.name << ", demonstration from " << o.inputs.from << "\n"
             << describe_graph_text(t.scene, graph) << "sampling " << o.samples << " per transition:\n";
   for (size_t i = 0; i < graph.transitions.size(); ++i) {
@@ -94,7 +109,8 @@ int run_graph(const GraphOptions& o) {
                                 {"goal", d["goal"]},
                                 {"projection_success_rate", success_rate},
                                 {"projections_per_second", per_second},
-                                {"collision_free_rate", total ? static_cast<double>(total_free) / total : 0.0}}
+                                {"collision_free_rate", total ? static_cast<double>(total_free) / total : 0.0},
+                                {"deviation_from_subgoals", deviation}}
                      .dump()
               << std::endl;
   }

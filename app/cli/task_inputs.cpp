@@ -1,7 +1,6 @@
 #include "app/cli/task_inputs.h"
 
 #include "core/demo/benchmark_demonstration.h"
-#include "core/error.h"
 
 namespace demoplan::cli {
 
@@ -19,11 +18,7 @@ void add_task_inputs(CLI::App& sub, TaskInputs& in, bool with_from) {
 LoadedTask load_task_inputs(const TaskInputs& in) {
   LoadedTask t{load_benchmark_task(in.data_dir, in.task), {}, {}};
   t.scene = build_benchmark_scene(t.task, in.robot, in.pose);
-  if (in.from == "subgoals") {
-    t.demo = demonstration_from_subgoals(t.task);
-  } else {
-    throw InputError(t.task.file, "objects_poses", "--from raw is not available yet");
-  }
+  t.demo = demonstration_from_benchmark(t.task, t.scene, in.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals);
   return t;
 }
 

@@ -18,8 +18,28 @@ struct ContactSegment {
 std::vector<ContactSegment> contact_segments(const BenchmarkTask& task);
 
 // Events: a grasp at each segment's first frame, a release at the frame after its last. Poses:
-// subgoal column 2k at the k-th grasp and 2k+1 at the k-th release. Throws InputError when the
-// task has no subgoals or their count does not match the segments.
+// subgoal column 2k at the k-th grasp and 2k+1 at the k-th release, all in the world. Throws
+// InputError when the task has no subgoals or their count does not match the segments.
 Demonstration demonstration_from_subgoals(const BenchmarkTask& task);
+
+// The same events, with every object's pose decided per rest interval (from a release, or the
+// start, to its next grasp, or the end) and placed on its support in `scene`:
+//  - on furniture: the subgoal pose (subgoals), or the robust average of the raw frames of the
+//    interval snapped onto the furniture surface (raw);
+//  - on nothing the furniture offers while the robot has a surface of its own (waiter: the
+//    demonstrator's tray, the KMR's deck): relative to the robot link carrying that surface,
+//    at the object's offset from the tray centre, snapped onto the surface.
+// Throws InputError naming the event when an object rests on nothing.
+enum class PoseSource { Subgoals, Raw };
+Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scene& scene, PoseSource source);
+
+// How far one demonstration's object poses lie from another's (same events), over every
+// (event, object) pair whose pose is in the world in both.
+struct PoseDeviation {
+  int pairs = 0;
+  double median_translation_mm = 0, max_translation_mm = 0;
+  double median_rotation_deg = 0, max_rotation_deg = 0;
+};
+PoseDeviation pose_deviation(const Demonstration& a, const Demonstration& b);
 
 }  // namespace demoplan

@@ -78,6 +78,9 @@ std::vector<DemonstrationIssue> validate(const Demonstration& d) {
       else if (!is_rotation(T.linear(), 1e-5))
         issues.push_back({idx, describe(d, i) + ": rotation of " + d.object_ids[o] + " is not orthonormal"});
     }
+    if (!e.pose_frames.empty() && e.pose_frames.size() != static_cast<size_t>(n))
+      issues.push_back({idx, describe(d, i) + ": has " + std::to_string(e.pose_frames.size()) +
+                                 " pose frames, expected " + std::to_string(n)});
     if (!(e.confidence >= 0.0 && e.confidence <= 1.0))
       issues.push_back({idx, describe(d, i) + ": confidence must be within [0, 1]"});
   }
@@ -117,21 +120,25 @@ void set_object_pose(Demonstration& d, size_t event, int object, const Pose& pos
 void save_demonstration(const std::string& path, const Demonstration& d) {
   Json j{{"format", kFormat},
          {"version", kVersion},
-         {"pose_convention", "4x4 row-major world pose of the object frame, metres"},
+         {"pose_convention", "4x4 row-major pose of the object frame, metres, in the world or, where "
+                             "'pose_frames' names a robot link, relative to that link"},
          {"task", d.task},
          {"fps", d.fps},
          {"objects", d.object_ids}};
   Json events = Json::array();
   for (const auto& e : d.events) {
-    Json poses = Json::object();
-    for (size_t o = 0; o < e.poses.size() && o < d.object_ids.size(); ++o)
+    Json poses = Json::object(), frames = Json::object();
+    for (size_t o = 0; o < e.poses.size() && o < d.object_ids.size(); ++o) {
       poses[d.object_ids[o]] = pose_to_json(e.poses[o]);
-    events.push_back({{"frame", e.frame},
-                      {"object", e.object >= 0 && e.object < static_cast<int>(d.object_ids.size())
-                                     ? d.object_ids[e.object] : ""},
-                      {"type", type_name(e.type)},
-                      {"confidence", e.confidence},
-                      {"poses", poses}});
+      if (o < e.pose_frames.size() && !e.pose_frames[o].empty()) frames[d.object_ids[o]] = e.pose_frames[o];
+    }
+    Json ev{{"frame", e.frame},
+            {"object", e.object >= 0 && e.object < static_cast<int>(d.object_ids.size()) ? d.object_ids[e.object] : ""},
+            {"type", type_name(e.type)},
+            {"confidence", e.confidence},
+            {"poses", poses}};
+    if (!frames.empty()) ev["pose_frames"] = frames;
+    events.push_back(std::move(ev));
   }
   j["events"] = events;
   write_json_file_atomic(path, j);
@@ -165,6 +172,12 @@ Demonstration load_demonstration(const std::string& path) {
     ev.confidence = e.has("confidence") ? e["confidence"].number() : 1.0;
     const JsonField poses = e["poses"];
     for (const auto& id : d.object_ids) ev.poses.push_back(poses[id].pose());
+    if (e.has("pose_frames")) {
+      const JsonField frames = e["pose_frames"];
+      for (const auto& [id, _] : frames.value().items())
+        if (d.object_index(id) < 0) frames[id].fail("'" + id + "' is not in objects");
+      for (const auto& id : d.object_ids) ev.pose_frames.push_back(frames.has(id) ? frames[id].string() : "");
+    }
     d.events.push_back(std::move(ev));
   }
   return d;

@@ -16,7 +16,15 @@ struct ContactEvent {
   int object = -1;       // index into Demonstration::object_ids
   EventType type = EventType::Grasp;
   double confidence = 1.0;  // 0..1; 1 for edited or ground-truth events
-  PoseList poses;        // world pose of every object at this event
+  PoseList poses;        // pose of every object at this event, in its frame (below)
+  // Per object: "" when the pose is in the world, else the robot link the object rests on and
+  // travels with (the KMR's deck); the pose is then relative to that link. Empty: all world.
+  std::vector<std::string> pose_frames;
+
+  const std::string& pose_frame(int object) const {
+    static const std::string world;
+    return pose_frames.empty() ? world : pose_frames[object];
+  }
 };
 
 struct Demonstration {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace demoplan {
 
@@ -40,6 +41,24 @@ Eigen::Vector3d centroid(const std::vector<Eigen::Vector3d>& pts) {
   for (const auto& p : pts) c += p;
   return c / static_cast<double>(pts.size());
 }
+
+// In-plane vector that moves `point` inside the polygon, 1 cm past the nearest edge (zero when
+// it is inside already).
+Eigen::Vector3d slide_inside(const PolygonPlane& plane, const std::vector<Eigen::Vector3d>& poly,
+                             const Eigen::Vector3d& point) {
+  if (projects_inside(plane, poly, point)) return Eigen::Vector3d::Zero();
+  const Eigen::Vector3d p = point - (point - plane.origin).dot(plane.normal) * plane.normal;
+  Eigen::Vector3d nearest = poly[0];
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const Eigen::Vector3d a = poly[i], b = poly[(i + 1) % poly.size()];
+    const double t = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+    const Eigen::Vector3d c = a + t * (b - a);
+    if ((c - p).norm() < best) best = (c - p).norm(), nearest = c;
+  }
+  const Eigen::Vector3d inward = (centroid(poly) - nearest).normalized();
+  return nearest + 0.01 * inward - p;
+}
 }  // namespace
 
 std::optional<SnapResult> snap_to_support(const std::vector<std::vector<Eigen::Vector3d>>& faces,
@@ -59,8 +78,10 @@ std::optional<SnapResult> snap_to_support(const std::vector<std::vector<Eigen::V
       const Eigen::Vector3d c = centroid(w);
       const double distance = (c - plane.origin).dot(plane.normal);
       if (tilt > options.max_tilt || std::abs(distance) > options.max_distance) continue;
-      if (!projects_inside(plane, supports[s], c)) continue;
-      const double score = tilt + std::abs(distance) * 10.0;  // 1 cm weighs like 0.1 rad
+      const Eigen::Vector3d slide = slide_inside(plane, supports[s], c);
+      if (slide.norm() > options.max_outside) continue;
+      // 1 cm off the plane or outside the polygon weighs like 0.1 rad of tilt.
+      const double score = tilt + (std::abs(distance) + slide.norm()) * 10.0;
       if (score >= best_score) continue;
       best_score = score;
       // Rotate about the face centroid so the face normal becomes -n, then set the height.
@@ -71,8 +92,8 @@ std::optional<SnapResult> snap_to_support(const std::vector<std::vector<Eigen::V
       corrected.translation() = c + align * (pose.translation() - c);
       const Eigen::Vector3d c2 = corrected * centroid(faces[f]);
       const double h = (c2 - plane.origin).dot(plane.normal);
-      corrected.translation() += (options.gap - h) * plane.normal;
-      best = SnapResult{corrected, static_cast<int>(s), static_cast<int>(f), tilt, options.gap - h};
+      corrected.translation() += (options.gap - h) * plane.normal + slide;
+      best = SnapResult{corrected, static_cast<int>(s), static_cast<int>(f), tilt, options.gap - h, slide.norm()};
     }
   }
   return best;

@@ -17,6 +17,9 @@ struct SnapOptions {
   double max_tilt = 0.35;       // rad: face normal to support normal, beyond this no match
   double max_distance = 0.05;   // m: face centroid to support plane
   double gap = 0.001;           // m: where the face ends up above the support
+  // m: how far outside the support the face centroid may project; such an object is moved
+  // inside, 1 cm past the edge. 0: it must project inside.
+  double max_outside = 0.0;
 };
 
 struct SnapResult {
@@ -25,6 +28,7 @@ struct SnapResult {
   int face = -1;      // index of the object's contact polygon that rests on it
   double tilt = 0.0;  // rad, rotation applied
   double shift = 0.0; // m, translation along the normal applied
+  double slide = 0.0; // m, translation within the plane to bring it onto the support
 };
 
 // Finds the object face and support polygon that fit the pose best (smallest tilt, then

@@ -63,6 +63,16 @@ ConstraintGraph build_constraint_graph(const Scene& scene, const Demonstration& 
 
   ConstraintGraph g;
   const RobotModel& model = scene.robot.model;
+  auto placement_of = [&](const ContactEvent& e, int o) {
+    ObjectPlacement p{-1, e.poses[o]};
+    if (const std::string& frame = e.pose_frame(o); !frame.empty()) {
+      p.link = model.link_index(frame);
+      if (p.link < 0)
+        throw InputError(source, "events: pose_frames." + scene.objects[o].id,
+                         "'" + frame + "' is not a link of " + scene.robot.name);
+    }
+    return p;
+  };
   g.gripper_joints = gripper_joint_slots(model, scene.robot.gripper_link);
   for (int i = 0; i < model.nq; ++i)
     if (std::find(g.gripper_joints.begin(), g.gripper_joints.end(), i) == g.gripper_joints.end())
@@ -80,7 +90,7 @@ ConstraintGraph build_constraint_graph(const Scene& scene, const Demonstration& 
         first = &e;
         break;
       }
-    resting[o].pose = first->poses[o];
+    resting[o] = placement_of(*first, static_cast<int>(o));
   }
   auto add_placement = [&](const std::vector<ObjectPlacement>& placements, int step) {
     for (int s : g.placement_sequence)
@@ -106,7 +116,7 @@ ConstraintGraph build_constraint_graph(const Scene& scene, const Demonstration& 
     const ContactEvent& release = demo.events[i + 1];
     const int o = grasp.object;
     std::vector<ObjectPlacement> after = g.states[current].objects;
-    after[o].pose = release.poses[o];
+    after[o] = placement_of(release, o);
     const int next = add_placement(after, pick + 1);
     const auto& handles = scene.objects[o].srdf.handles;
     int usable = 0;
