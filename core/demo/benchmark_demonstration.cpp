@@ -185,9 +185,11 @@ Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scen
         raw.push_back(task.raw_poses[rows[o]][f]);
         frames.push_back(f);
       }
-      // Subgoals: the column at the end of the rest (the pose it is picked up from), else at
-      // its start.
-      const int where = r.end_event >= 0 ? r.end_event : std::max(r.start_event, 0);
+      // Subgoals: the first column before the first pick and the last after the last release
+      // (the benchmark's start and goal); in between, the column at the end of the rest (the
+      // pose the object is picked up from: waiter_0's columns drift while objects ride).
+      const int last = static_cast<int>(d.events.size()) - 1;
+      const int where = r.start_event < 0 ? 0 : r.end_event < 0 ? last : r.end_event;
       const Pose* cleaned = source == PoseSource::Subgoals ? &d.events[where].poses[o] : nullptr;
       const auto [pose, frame] = assign.place(static_cast<int>(o), raw, frames, cleaned, where);
       // Every event during the rest, and the two that bound it, see the object there.

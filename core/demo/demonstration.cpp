@@ -93,7 +93,9 @@ size_t insert_event(Demonstration& d, ContactEvent e) {
   // After every event at the same or an earlier frame: a new event goes last among equals.
   auto it = std::upper_bound(d.events.begin(), d.events.end(), e.frame,
                              [](int f, const ContactEvent& x) { return f < x.frame; });
-  return static_cast<size_t>(d.events.insert(it, std::move(e)) - d.events.begin());
+  const auto index = it - d.events.begin();  // before insert() may reallocate
+  d.events.insert(it, std::move(e));
+  return static_cast<size_t>(index);
 }
 
 void remove_event(Demonstration& d, size_t index) {

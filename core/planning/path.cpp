@@ -37,7 +37,8 @@ void save_path(const std::string& file, const Path& path) {
             {"objects", objects},
             {"state", w.state},
             {"state_name", w.state_name},
-            {"action", action_name(w.action)}};
+            {"action", action_name(w.action)},
+            {"approach", w.approach}};
     if (w.action != GripperAction::None) wp["object"] = w.object >= 0 ? path.object_ids.at(w.object) : "";
     waypoints.push_back(std::move(wp));
   }
@@ -77,6 +78,7 @@ Path load_path(const std::string& file) {
     for (size_t o = 0; o < objects.size(); ++o) wp.objects.push_back(objects[o].pose());
     wp.state = w["state"].integer();
     wp.state_name = w["state_name"].string();
+    wp.approach = w.has("approach") && w["approach"].boolean();
     const std::string action = w["action"].string();
     if (action == "grasp") wp.action = GripperAction::Grasp;
     else if (action == "release") wp.action = GripperAction::Release;

@@ -18,6 +18,9 @@ struct Waypoint {
   std::string state_name;  // e.g. "P1", "G0 YCBV_05/handleXpy"
   GripperAction action = GripperAction::None;  // closes (grasp) or opens (release) here
   int object = -1;         // the object grasped or released, for an action
+  // The segment to the next waypoint is a straight approach or retreat along a handle's axis
+  // (part of a transition): shortcutting keeps it.
+  bool approach = false;
 };
 
 struct Path {

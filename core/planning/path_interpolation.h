@@ -1,0 +1,40 @@
+#pragma once
+// A Path as a continuous motion, t in [0, 1] proportional to the robot's joint-space length:
+// the robot moves linearly between waypoints; an object that keeps its pose relative to a robot
+// link across a segment (held by the gripper, riding on the deck) moves rigidly with that link,
+// an object that keeps its world pose stays. Anything else moves without being carried: the
+// interpolator interpolates it and says so.
+#include <vector>
+
+#include "core/planning/path.h"
+#include "core/scene/scene.h"
+
+namespace demoplan {
+
+class PathInterpolator {
+public:
+  PathInterpolator(const Scene& scene, const Path& path);
+
+  // The robot configuration and every object's world pose at parameter t.
+  SceneState at(double t) const;
+  double length() const { return total_; }
+  // Parameter of waypoint k.
+  double waypoint_parameter(size_t k) const { return total_ > 0 ? cumulative_[k] / total_ : 0.0; }
+  // Objects that move across a segment without keeping their pose to any robot link: a
+  // teleport. Empty for a well-formed path; (segment, object) pairs otherwise.
+  const std::vector<std::pair<int, int>>& uncarried() const { return uncarried_; }
+
+private:
+  struct ObjectMotion {
+    int link = -1;  // -1: static (or uncarried: interpolated), else the robot link it rides
+    Pose link_T_object = Pose::Identity();
+  };
+  const Scene& scene_;
+  const Path& path_;
+  std::vector<double> cumulative_;
+  double total_ = 0.0;
+  std::vector<std::vector<ObjectMotion>> motion_;  // [segment][object]
+  std::vector<std::pair<int, int>> uncarried_;
+};
+
+}  // namespace demoplan

@@ -1,0 +1,72 @@
+#pragma once
+// The multi-contact RRT guided by the demonstration (Alg. 1 and 2 of the paper): trees rooted
+// at the start and goal configurations, more trees rooted at sampled transitions, each grown in
+// its states and linked to the other trees of the same state until start and goal share a tree.
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/graph/constraint_graph.h"
+#include "core/planning/path.h"
+#include "core/scene/collision_checker.h"
+
+namespace demoplan {
+
+struct PlannerParams {
+  double eta_sample_tree = 0.1;  // probability of rooting a new tree at a sampled transition
+  double step = 0.3;             // delta: tree growth step, joint-space Euclidean (rad, m)
+  double resolution = 0.01;      // edges are collision-checked every this much (as the validator)
+  long max_iterations = 10'000'000;
+  double time_limit = 60.0;      // s, wall clock
+  std::uint64_t seed = 1;
+  double progress_period = 0.05;  // s between progress callbacks
+};
+
+// One edge added since the previous snapshot, for drawing the trees grow.
+struct EdgeSnapshot {
+  int tree = -1;  // index into PlannerProgress::tree_nodes
+  int state = -1;
+  Eigen::VectorXd from, to;
+};
+
+struct PlannerProgress {
+  double elapsed_s = 0.0;
+  long iterations = 0;
+  int trees = 0;                       // trees left after merging
+  size_t nodes = 0;
+  std::vector<size_t> tree_nodes;      // per current tree
+  std::vector<size_t> state_nodes;     // per graph state
+  std::vector<EdgeSnapshot> new_edges; // since the previous snapshot
+  std::vector<std::pair<int, Eigen::VectorXd>> new_roots;  // (state, q) of new transition trees
+  bool final = false;
+};
+
+using ProgressCallback = std::function<void(const PlannerProgress&)>;
+
+struct PlanResult {
+  bool solved = false;
+  bool cancelled = false;
+  std::string message;  // why not solved, when not
+  Path path;            // start to goal, unshortened
+  long iterations = 0;
+  int trees = 0;        // trees ever created
+  size_t nodes = 0;
+  double planning_time_s = 0.0;
+  std::vector<size_t> state_nodes;
+  // Transitions never sampled collision-free: for "which transition could not be sampled".
+  std::vector<std::string> unsampled_transitions;
+};
+
+// Plans from graph.q_start in graph.start_state to graph.q_goal in graph.goal_state. The same
+// inputs and seed give the same path, bit for bit. `cancel` is polled at least every few ms.
+PlanResult plan_guided(const Scene& scene, const ConstraintGraph& graph, const CollisionChecker& checker,
+                       const PlannerParams& params, const ProgressCallback& progress = {},
+                       const std::atomic<bool>* cancel = nullptr);
+
+// Builds the Path of a node sequence: object poses from each node's state, gripper actions
+// where the state changes between a placement and a grasp.
+Path make_path(const Scene& scene, const ConstraintGraph& graph, const std::vector<Eigen::VectorXd>& qs,
+               const std::vector<int>& states, const std::vector<char>& approach_to_next);
+
+}  // namespace demoplan

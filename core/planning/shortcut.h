@@ -1,0 +1,32 @@
+#pragma once
+// Random shortcutting (Sec. III-D): pick two configurations on the path that lie in the same
+// state, with no state change and no approach move between them; if the straight segment
+// joining them is collision-free in that state, it replaces the portion between them.
+#include <cstdint>
+
+#include "core/graph/constraint_graph.h"
+#include "core/planning/path.h"
+#include "core/scene/collision_checker.h"
+
+namespace demoplan {
+
+struct ShortcutParams {
+  double time_limit = 1.0;   // s
+  long max_attempts = 100000;
+  // Collision-check step (joint space, rad): finer than the planner's, because a long cut can
+  // run close along an obstacle.
+  double resolution = 0.0025;
+  std::uint64_t seed = 1;
+};
+
+struct ShortcutResult {
+  double length_before = 0.0, length_after = 0.0;  // robot joint-space length (rad)
+  long attempts = 0, accepted = 0;
+  double time_s = 0.0;
+};
+
+// Shortens `path` in place; it stays a path of the same states in the same order.
+ShortcutResult shortcut_path(const Scene& scene, const ConstraintGraph& graph, const CollisionChecker& checker,
+                             Path& path, const ShortcutParams& params);
+
+}  // namespace demoplan

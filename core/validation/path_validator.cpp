@@ -1,0 +1,197 @@
+#include "core/validation/path_validator.h"
+
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "core/model/kinematics.h"
+#include "core/planning/path_interpolation.h"
+#include "core/scene/collision_checker.h"
+#include "core/scene/support.h"
+
+namespace demoplan {
+
+ValidationTask validation_task(const BenchmarkTask& task, const Scene& scene) {
+  ValidationTask v;
+  v.q_initial = scene.robot.initial_configuration;
+  v.source = task.subgoal_poses.empty() ? "benchmark raw first/last frames" : "benchmark subgoals";
+  size_t row = 0;
+  for (size_t i = 0; i < task.objects.size(); ++i) {
+    if (!task.objects[i].in_planning_model) continue;
+    const PoseList& track = task.subgoal_poses.empty() ? task.raw_poses[i] : task.subgoal_poses[row];
+    v.start_objects.push_back(track.front());
+    v.goal_objects.push_back(track.back());
+    ++row;
+  }
+  return v;
+}
+
+ValidationTask validation_task(const Demonstration& demo, const Scene& scene) {
+  ValidationTask v;
+  v.q_initial = scene.robot.initial_configuration;
+  v.source = "demonstration";
+  PoseVector links;
+  forward_kinematics(scene.robot.model, v.q_initial, scene.robot.base, links);
+  auto world = [&](const ContactEvent& e, int o) {
+    const std::string& f = e.pose_frame(o);
+    return f.empty() ? e.poses[o] : links[scene.robot.model.link_index(f)] * e.poses[o];
+  };
+  for (size_t o = 0; o < demo.object_ids.size(); ++o) {
+    v.start_objects.push_back(world(demo.events.front(), static_cast<int>(o)));
+    v.goal_objects.push_back(world(demo.events.back(), static_cast<int>(o)));
+  }
+  return v;
+}
+
+namespace {
+
+bool near_identity(const Pose& a, const Pose& b, double tol) {
+  const Pose d = b.inverse() * a;
+  return (d.linear() - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <= tol &&
+         d.translation().cwiseAbs().maxCoeff() <= tol;
+}
+
+std::string at(double t) {
+  std::ostringstream s;
+  s.precision(6);
+  s << " at t = " << t;
+  return s.str();
+}
+
+// The sample parameters: the benchmark's grid plus enough points that consecutive samples are
+// at most `max_joint_step` apart in joint space.
+std::vector<double> sample_parameters(const PathInterpolator& path, const Path& p, const ValidationOptions& o) {
+  std::set<double> ts;
+  const int n = static_cast<int>(std::ceil((1.0 + o.delta) / o.delta));
+  for (int k = 0; k < n; ++k) ts.insert(std::min(1.0, k * o.delta));
+  if (path.length() > 0) {
+    for (size_t k = 0; k + 1 < p.waypoints.size(); ++k) {
+      const double a = path.waypoint_parameter(k), b = path.waypoint_parameter(k + 1);
+      const int steps = static_cast<int>(std::ceil((b - a) * path.length() / o.max_joint_step));
+      for (int i = 0; i <= steps; ++i) ts.insert(a + (b - a) * i / std::max(steps, 1));
+    }
+  }
+  return {ts.begin(), ts.end()};
+}
+
+struct GraspPair {
+  int object, handle;
+  bool operator<(const GraspPair& o) const { return std::tie(object, handle) < std::tie(o.object, o.handle); }
+};
+
+}  // namespace
+
+ValidationReport validate_path(const Scene& scene, const ValidationTask& task, const Path& path,
+                               const ValidationOptions& o) {
+  ValidationReport r;
+  auto fail = [&](const std::string& why, double t) {
+    r.valid = false;
+    r.message = why + (t >= 0 ? at(t) : "");
+    r.failure_t = t;
+    return r;
+  };
+  if (path.waypoints.empty()) return fail("the path has no waypoint", -1);
+  const size_t n_objects = scene.objects.size();
+  for (const auto& w : path.waypoints)
+    if (w.q.size() != scene.robot.model.nq || w.objects.size() != n_objects)
+      return fail("a waypoint does not match the scene (configuration or object count)", -1);
+  const PathInterpolator interp(scene, path);
+  const std::vector<double> ts = sample_parameters(interp, path, o);
+  r.samples = ts.size();
+  // The benchmark's compute_lengths on its own grid.
+  const int n = static_cast<int>(std::ceil((1.0 + o.delta) / o.delta));
+  SceneState a = interp.at(0.0);
+  for (int k = 1; k < n; ++k) {
+    const SceneState b = interp.at(std::min(1.0, k * o.delta));
+    r.length.robot += (b.q - a.q).norm();
+    double tr = 0.0, rot = 0.0;
+    for (size_t i = 0; i < n_objects; ++i) {
+      tr += (b.objects[i].translation() - a.objects[i].translation()).squaredNorm();
+      const double angle = log3(a.objects[i].linear().transpose() * b.objects[i].linear()).norm();
+      rot += angle * angle;
+    }
+    r.length.object_translation += std::sqrt(tr);
+    r.length.object_rotation += std::sqrt(rot);
+    a = b;
+  }
+
+  // 1 and 2: start and end.
+  const SceneState first = interp.at(0.0), last = interp.at(1.0);
+  for (size_t i = 0; i < n_objects; ++i) {
+    if (!near_identity(first.objects[i], task.start_objects[i], o.error_identity))
+      return fail(scene.objects[i].id + " does not start at its start pose (" + task.source + ")", 0.0);
+    if (!near_identity(last.objects[i], task.goal_objects[i], o.error_identity))
+      return fail(scene.objects[i].id + " does not end at its goal pose (" + task.source + ")", 1.0);
+  }
+  if ((first.q - task.q_initial).norm() > o.error_robot_distance)
+    return fail("the robot does not start at its initial configuration", 0.0);
+  if ((last.q - task.q_initial).norm() > o.error_robot_distance)
+    return fail("the robot does not end at its initial configuration", 1.0);
+
+  const CollisionChecker checker(scene);
+  CollisionData data = checker.make_data();
+  const std::vector<SupportPolygon> supports = support_polygons(scene);
+  const GraspFrame& gripper = scene.robot.gripper();
+  PoseVector links;
+  std::vector<int> support_link_prev(n_objects, -2);
+  SceneState prev;
+  std::set<GraspPair> held_prev;
+  bool have_prev = false;
+  for (double t : ts) {
+    const SceneState s = interp.at(t);
+    CollisionPair hit;
+    // 3: collisions, every pair, no allowed contact.
+    if (checker.in_collision(s, data, {}, &hit)) return fail("collision between " + hit.first + " and " + hit.second, t);
+    forward_kinematics(scene.robot.model, s.q, scene.robot.base, links);
+    const Pose g = links[scene.robot.gripper_link] * gripper.pose;
+    std::set<GraspPair> held;
+    std::vector<int> support_link(n_objects, -2);  // -2: not placed, -1: world, else robot link
+    for (size_t i = 0; i < n_objects; ++i) {
+      const auto& handles = scene.objects[i].srdf.handles;
+      for (size_t h = 0; h < handles.size(); ++h) {
+        if (handles[h].clearance > gripper.clearance) continue;
+        const Pose handle = s.objects[i] * handles[h].pose;
+        if (log6(g.inverse() * handle).norm() < o.error_grasp) held.insert({static_cast<int>(i), static_cast<int>(h)});
+      }
+      const bool grasped = std::any_of(held.begin(), held.end(), [&](auto& p) { return p.object == static_cast<int>(i); });
+      const PlacementResult placed =
+          check_placement(scene, supports, links, static_cast<int>(i), s.objects[i], {o.placement_lower, o.placement_upper});
+      if (placed.placed) support_link[i] = supports[placed.support].robot_link;
+      // 4: every object grasped or placed.
+      if (!grasped && !placed.placed) return fail(scene.objects[i].id + " is neither grasped nor placed", t);
+    }
+    if (have_prev) {
+      // 5: a placed object does not move on its support (the benchmark's intended rule; its code
+      // applies it to the mirrored object, see docs/validation.md), compared in its support's frame.
+      PoseVector plinks;
+      forward_kinematics(scene.robot.model, prev.q, scene.robot.base, plinks);
+      for (size_t i = 0; i < n_objects; ++i) {
+        const bool grasped_now = std::any_of(held.begin(), held.end(), [&](auto& p) { return p.object == static_cast<int>(i); });
+        const bool grasped_before = std::any_of(held_prev.begin(), held_prev.end(), [&](auto& p) { return p.object == static_cast<int>(i); });
+        if (grasped_now || grasped_before || support_link[i] == -2 || support_link[i] != support_link_prev[i]) continue;
+        const int l = support_link[i];
+        const Pose now = l < 0 ? s.objects[i] : links[l].inverse() * s.objects[i];
+        const Pose before = l < 0 ? prev.objects[i] : plinks[l].inverse() * prev.objects[i];
+        if (!near_identity(now, before, o.error_identity)) return fail(scene.objects[i].id + " moves while placed", t);
+      }
+      // compute_n_grasps: (gripper, handle) pairs new since the previous sample.
+      for (const auto& p : held)
+        if (!held_prev.count(p)) ++r.grasps;
+    }
+    prev = s;
+    held_prev = std::move(held);
+    support_link_prev = support_link;
+    have_prev = true;
+  }
+  if (!interp.uncarried().empty()) {
+    const auto [seg, obj] = interp.uncarried().front();
+    return fail(scene.objects[obj].id + " moves without being carried between waypoints " + std::to_string(seg) +
+                    " and " + std::to_string(seg + 1),
+                interp.waypoint_parameter(seg));
+  }
+  r.valid = true;
+  r.message = "ok";
+  return r;
+}
+
+}  // namespace demoplan

@@ -1,0 +1,149 @@
+#include "perception/camera/camera_model.h"
+
+#include <filesystem>
+
+#include <opencv2/calib3d.hpp>
+
+#include "core/error.h"
+#include "perception/io/pose_json.h"
+#include "perception/markers/marker_dictionary.h"
+
+namespace demoplan::perception {
+
+namespace {
+
+constexpr const char* kFormat = "demoplan-camera";
+constexpr int kVersion = 1;
+
+bool valid_distortion_count(size_t n) { return n == 0 || n == 4 || n == 5 || n == 8 || n == 12 || n == 14; }
+
+void check_intrinsics(const Camera& c, const std::string& path, const std::string& field) {
+  if (c.image_size.width <= 0 || c.image_size.height <= 0) throw InputError(path, "image_size", "must be positive");
+  if (!(c.fx > 0) || !(c.fy > 0)) throw InputError(path, field, "focal lengths must be > 0");
+}
+
+MarkerBoard board_from_json(const JsonField& b) {
+  MarkerBoard board;
+  board.dictionary = b["dictionary"].string();
+  if (!is_marker_dictionary(board.dictionary)) b["dictionary"].fail("unknown ArUco dictionary '" + board.dictionary + "'");
+  board.markers_x = b["markers_x"].integer();
+  board.markers_y = b["markers_y"].integer();
+  if (board.markers_x < 1 || board.markers_y < 1) b.fail("markers_x and markers_y must be >= 1");
+  board.marker_length = b["marker_length"].number();
+  board.marker_separation = b["marker_separation"].number();
+  if (!(board.marker_length > 0) || board.marker_separation < 0) b.fail("marker_length must be > 0, marker_separation >= 0");
+  board.first_id = b.has("first_id") ? b["first_id"].integer() : 0;
+  if (board.first_id < 0) b["first_id"].fail("must be >= 0");
+  board.world_T_board = pose_from_json(b["world_T_board"]);
+  return board;
+}
+
+Camera load_json_camera(const std::string& path) {
+  const Json json = read_json_file(path);
+  const JsonField root(json, path);
+  check_format(root, kFormat, kVersion);
+  Camera c;
+  const JsonField size = root["image_size"];
+  if (size.size() != 2) size.fail("must be [width, height]");
+  c.image_size = {size[0].integer(), size[1].integer()};
+  const JsonField k = root["intrinsics"];
+  c.fx = k["fx"].number();
+  c.fy = k["fy"].number();
+  c.cx = k["cx"].number();
+  c.cy = k["cy"].number();
+  check_intrinsics(c, path, "intrinsics");
+  if (root.has("distortion")) {
+    const JsonField d = root["distortion"];
+    for (size_t i = 0; i < d.size(); ++i) c.distortion.push_back(d[i].number());
+    if (!valid_distortion_count(c.distortion.size())) d.fail("must hold 0, 4, 5, 8, 12 or 14 coefficients");
+  }
+  if (root.has("world_T_camera")) c.world_T_camera = pose_from_json(root["world_T_camera"]);
+  if (root.has("board")) c.board = board_from_json(root["board"]);
+  return c;
+}
+
+Camera load_opencv_camera(const std::string& path) {
+  cv::FileStorage fs;
+  try {
+    if (!fs.open(path, cv::FileStorage::READ)) throw InputError(path, "", "cannot open the calibration file");
+  } catch (const cv::Exception& e) {
+    throw InputError(path, "", std::string("not an OpenCV calibration file: ") + e.err);
+  }
+  auto node = [&](std::initializer_list<const char*> names) -> cv::FileNode {
+    for (const char* n : names)
+      if (!fs[n].empty()) return fs[n];
+    return {};
+  };
+  Camera c;
+  cv::Mat K, D;
+  const std::string kname = "camera_matrix";
+  try {
+    const cv::FileNode kn = node({"camera_matrix", "cameraMatrix", "K"});
+    if (kn.empty()) throw InputError(path, kname, "missing (also looked for cameraMatrix, K)");
+    kn >> K;
+    if (const cv::FileNode dn = node({"distortion_coefficients", "dist_coeffs", "distCoeffs", "D"}); !dn.empty()) dn >> D;
+    const cv::FileNode w = node({"image_width"}), h = node({"image_height"});
+    if (w.empty() || h.empty()) throw InputError(path, "image_width", "missing image_width / image_height");
+    c.image_size = {static_cast<int>(w), static_cast<int>(h)};
+  } catch (const cv::Exception& e) {
+    throw InputError(path, kname, std::string("unreadable: ") + e.err);
+  }
+  if (K.rows != 3 || K.cols != 3) throw InputError(path, kname, "must be a 3x3 matrix");
+  K.convertTo(K, CV_64F);
+  c.fx = K.at<double>(0, 0);
+  c.fy = K.at<double>(1, 1);
+  c.cx = K.at<double>(0, 2);
+  c.cy = K.at<double>(1, 2);
+  check_intrinsics(c, path, kname);
+  if (!D.empty()) {
+    D.convertTo(D, CV_64F);
+    D = D.reshape(1, 1);
+    c.distortion.assign(D.begin<double>(), D.end<double>());
+    if (!valid_distortion_count(c.distortion.size()))
+      throw InputError(path, "distortion_coefficients", "must hold 4, 5, 8, 12 or 14 coefficients");
+  }
+  return c;
+}
+
+}  // namespace
+
+cv::Mat Camera::distortion_coefficients() const {
+  cv::Mat d(1, static_cast<int>(distortion.size()), CV_64F);
+  for (size_t i = 0; i < distortion.size(); ++i) d.at<double>(0, static_cast<int>(i)) = distortion[i];
+  return d;
+}
+
+cv::Point2d Camera::project(const Eigen::Vector3d& p) const {
+  if (distortion.empty()) return {fx * p.x() / p.z() + cx, fy * p.y() / p.z() + cy};
+  std::vector<cv::Point3d> in{{p.x(), p.y(), p.z()}};
+  std::vector<cv::Point2d> out;
+  cv::projectPoints(in, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), camera_matrix(), distortion_coefficients(), out);
+  return out[0];
+}
+
+Camera load_camera(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path, "", "camera file not found");
+  const std::string ext = std::filesystem::path(path).extension().string();
+  return ext == ".json" ? load_json_camera(path) : load_opencv_camera(path);
+}
+
+void save_camera(const std::string& path, const Camera& c) {
+  Json j{{"format", kFormat},
+         {"version", kVersion},
+         {"conventions", "OpenCV camera frame (x right, y down, z forward); world_T_camera maps camera to "
+                         "world coordinates; poses {t: metres, q: [qx, qy, qz, qw]}"},
+         {"image_size", {c.image_size.width, c.image_size.height}},
+         {"intrinsics", {{"fx", c.fx}, {"fy", c.fy}, {"cx", c.cx}, {"cy", c.cy}}},
+         {"distortion", c.distortion}};
+  if (c.world_T_camera) j["world_T_camera"] = pose_to_json(*c.world_T_camera);
+  if (c.board) {
+    const MarkerBoard& b = *c.board;
+    j["board"] = {{"dictionary", b.dictionary},       {"markers_x", b.markers_x},
+                  {"markers_y", b.markers_y},         {"marker_length", b.marker_length},
+                  {"marker_separation", b.marker_separation}, {"first_id", b.first_id},
+                  {"world_T_board", pose_to_json(b.world_T_board)}};
+  }
+  write_json_file_atomic(path, j);
+}
+
+}  // namespace demoplan::perception
