@@ -17,6 +17,8 @@ struct Command {
 Command register_check_command(CLI::App& app);
 Command register_graph_command(CLI::App& app);
 Command register_plan_command(CLI::App& app);
+Command register_validate_command(CLI::App& app);
+Command register_bench_command(CLI::App& app);
 
 // The benchmark data folder: --data-dir, else $DEMOPLAN_DATA_DIR, else the bundled copy.
 std::string default_data_dir();

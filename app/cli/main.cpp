@@ -9,7 +9,8 @@ int main(int argc, char** argv) {
   CLI::App app{"demoplan: teach a robot cell a task from one video"};
   app.require_subcommand(1);
   const std::vector<Command> commands{register_check_command(app), register_graph_command(app),
-                                      register_plan_command(app)};
+                                      register_plan_command(app), register_validate_command(app),
+                                      register_bench_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

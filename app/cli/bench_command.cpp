@@ -1,0 +1,278 @@
+// demoplan-cli bench: the paper's benchmark protocol over tasks, robots, base poses and seeds;
+// every found path is checked by the validator. Prints the columns of the paper's Fig. 4.
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <numeric>
+#include <sstream>
+#include <thread>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli/command.h"
+#include "app/cli/task_inputs.h"
+#include "core/demo/benchmark_demonstration.h"
+#include "core/error.h"
+#include "core/io/json_file.h"
+#include "core/planning/solve.h"
+
+namespace demoplan::cli {
+
+namespace {
+
+struct BenchOptions {
+  std::string tasks = "shelf_0,shelf_1,shelf_2,tunnel_0,waiter_0";
+  std::string robots = "panda,ur5,kmr_iiwa";
+  std::string poses = "0-4";
+  std::string seeds = "1-10";
+  double time_limit = 60.0;
+  double waiter_time_limit = 300.0;
+  std::string from = "subgoals";
+  int jobs = 1;
+  std::string out, ompl_log, data_dir;
+  bool json = false;
+};
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+// "0-4" or "1,3,7" or "2".
+std::vector<int> int_range(const std::string& s, const std::string& option) {
+  std::vector<int> out;
+  for (const auto& part : split(s)) {
+    try {
+      const auto dash = part.find('-');
+      if (dash == std::string::npos) {
+        out.push_back(std::stoi(part));
+      } else {
+        const int a = std::stoi(part.substr(0, dash)), b = std::stoi(part.substr(dash + 1));
+        for (int i = a; i <= b; ++i) out.push_back(i);
+      }
+    } catch (const std::exception&) {
+      throw InputError("command line", option, "'" + part + "' is not a number or range like 0-4");
+    }
+  }
+  return out;
+}
+
+struct Run {
+  std::string task, robot;
+  int pose = 0, seed = 0;
+  double time_limit = 60;
+  // Results, for the planner's own path and for the shortened one.
+  bool solved = false;
+  double time_s = 0;
+  long iterations = 0;
+  int trees = 0;
+  size_t nodes = 0;
+  std::string message;
+  ValidationReport raw, shortened;
+  double shortcut_s = 0;
+};
+
+struct Instance {
+  BenchmarkTask task;
+  Scene scene;
+  Demonstration demo;
+  std::unique_ptr<ConstraintGraph> graph;
+  std::unique_ptr<CollisionChecker> checker;
+  ValidationTask vtask;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+double mean(const std::vector<double>& v) {
+  return v.empty() ? std::nan("") : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+
+void write_ompl_log(const std::string& file, const std::string& experiment, const std::vector<const Run*>& runs,
+                    double time_limit, double total_s) {
+  std::ofstream out(file);
+  if (!out) throw InputError(file, "", "cannot write the OMPL log");
+  char host[256] = "localhost";
+  gethostname(host, sizeof(host) - 1);
+  const std::time_t now = std::time(nullptr);
+  out << "demoplan version 0.1.0\nExperiment " << experiment << "\n0 experiment properties\nRunning on " << host
+      << "\nStarting at " << std::put_time(std::localtime(&now), "%Y-%m-%d %H:%M:%S")
+      << "\n<<<|\nvideo-guided multi-contact RRT on the guided-TAMP benchmark\n|>>>\n<<<|\n|>>>\n"
+      << (runs.empty() ? 0 : runs.front()->seed) << " is the random seed\n"
+      << time_limit << " seconds per run\n0 MB per run\n" << runs.size() << " runs per planner\n"
+      << total_s << " seconds spent to collect the data\n0 enum types\n2 planners\n";
+  for (int planner = 0; planner < 2; ++planner) {
+    out << (planner == 0 ? "guided" : "guided+shortcut") << "\n0 common properties\n"
+        << "9 properties for each run\ntime REAL\nsolved BOOLEAN\ncorrect solution BOOLEAN\nsolution length REAL\n"
+           "object translation REAL\nobject rotation REAL\ngrasps INTEGER\ngraph states INTEGER\nseed INTEGER\n"
+        << runs.size() << " runs\n";
+    for (const Run* r : runs) {
+      const ValidationReport& v = planner == 0 ? r->raw : r->shortened;
+      out << (r->time_s + (planner == 1 ? r->shortcut_s : 0.0)) << "; " << r->solved << "; " << (r->solved && v.valid)
+          << "; ";
+      if (r->solved) out << v.length.robot << "; " << v.length.object_translation << "; " << v.length.object_rotation << "; " << v.grasps;
+      else out << "; ; ; ";
+      out << "; " << r->nodes << "; " << r->seed << "; \n";
+    }
+    out << ".\n";
+  }
+}
+
+int run_bench(const BenchOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<int> poses = int_range(o.poses, "--poses"), seeds = int_range(o.seeds, "--seeds");
+  std::map<std::tuple<std::string, std::string, int>, std::unique_ptr<Instance>> instances;
+  std::vector<Run> runs;
+  for (const auto& task_name : split(o.tasks)) {
+    const BenchmarkTask task = load_benchmark_task(o.data_dir, task_name);
+    for (const auto& robot : split(o.robots)) {
+      const std::vector<int> available = benchmark_pose_ids(task, robot);
+      for (int pose : poses) {
+        if (std::find(available.begin(), available.end(), pose) == available.end()) continue;
+        auto in = std::make_unique<Instance>();
+        in->task = task;
+        in->scene = build_benchmark_scene(task, robot, pose);
+        in->demo = demonstration_from_benchmark(task, in->scene, o.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals);
+        in->graph = std::make_unique<ConstraintGraph>(build_constraint_graph(in->scene, in->demo));
+        in->checker = std::make_unique<CollisionChecker>(in->scene);
+        in->vtask = o.from == "raw" ? validation_task(in->demo, in->scene) : validation_task(task, in->scene);
+        instances[{task_name, robot, pose}] = std::move(in);
+        for (int seed : seeds)
+          runs.push_back({task_name, robot, pose, seed, task.task_name == "waiter" ? o.waiter_time_limit : o.time_limit});
+      }
+    }
+  }
+  std::cerr << runs.size() << " runs on " << instances.size() << " task instances, " << o.jobs << " job(s)\n";
+  std::mutex mutex;
+  size_t next = 0, done = 0;
+  auto worker = [&] {
+    while (true) {
+      size_t i;
+      {
+        std::lock_guard lock(mutex);
+        if (next >= runs.size()) return;
+        i = next++;
+      }
+      Run& r = runs[i];
+      const Instance& in = *instances.at({r.task, r.robot, r.pose});
+      SolveParams sp;
+      sp.planner.seed = static_cast<std::uint64_t>(r.seed);
+      sp.planner.time_limit = r.time_limit;
+      sp.shortcut = false;
+      SolveResult s = solve(in.scene, *in.graph, *in.checker, in.vtask, sp);
+      r.solved = s.plan.solved;
+      r.time_s = s.plan.planning_time_s;
+      r.iterations = s.plan.iterations;
+      r.trees = s.plan.trees;
+      r.nodes = s.plan.nodes;
+      r.message = s.plan.message;
+      if (r.solved) {
+        r.raw = s.validation;
+        Path shorter = s.plan.path;
+        ShortcutParams shp;
+        shp.seed = sp.planner.seed;
+        const ShortcutResult sh = shortcut_path(in.scene, *in.graph, *in.checker, shorter, shp);
+        r.shortcut_s = sh.time_s;
+        r.shortened = validate_path(in.scene, in.vtask, shorter);
+        if (!r.shortened.valid) r.shortened = r.raw;  // as solve() does: keep the planner's path
+      }
+      std::lock_guard lock(mutex);
+      ++done;
+      std::cerr << "[" << done << "/" << runs.size() << "] " << r.task << " " << r.robot << " pose " << r.pose
+                << " seed " << r.seed << ": "
+                << (r.solved ? (r.raw.valid ? "valid" : "INVALID (" + r.raw.message + ")") : "not solved (" + r.message + ")")
+                << ", " << std::fixed << std::setprecision(2) << r.time_s << " s\n" << std::defaultfloat;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int j = 0; j < std::max(1, o.jobs); ++j) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  // One row per task, robot and planner.
+  nlohmann::json rows = nlohmann::json::array();
+  std::map<std::pair<std::string, std::string>, std::vector<const Run*>> groups;
+  for (const Run& r : runs) groups[{r.task, r.robot}].push_back(&r);
+  std::cerr << "\n" << std::left << std::setw(10) << "task" << std::setw(10) << "robot" << std::setw(17) << "planner"
+            << std::right << std::setw(6) << "runs" << std::setw(9) << "success" << std::setw(10) << "median s"
+            << std::setw(9) << "mean s" << std::setw(12) << "length rad" << std::setw(8) << "grasps" << "\n";
+  for (const auto& [key, group] : groups) {
+    for (int planner = 0; planner < 2; ++planner) {
+      std::vector<double> times, lengths, grasps;
+      int solved = 0;
+      for (const Run* r : group) {
+        const ValidationReport& v = planner == 0 ? r->raw : r->shortened;
+        if (!r->solved || !v.valid) continue;  // success = solved and valid
+        ++solved;
+        times.push_back(r->time_s + (planner == 1 ? r->shortcut_s : 0.0));
+        lengths.push_back(v.length.robot);
+        grasps.push_back(v.grasps);
+      }
+      const std::string name = planner == 0 ? "guided" : "guided+shortcut";
+      const double rate = static_cast<double>(solved) / static_cast<double>(group.size());
+      rows.push_back({{"task", key.first}, {"robot", key.second}, {"planner", name},
+                      {"runs", group.size()}, {"solved", solved}, {"success_rate", rate},
+                      {"median_time_s", median(times)}, {"mean_time_s", mean(times)},
+                      {"median_path_length_rad", median(lengths)}, {"mean_grasps", mean(grasps)}});
+      std::cerr << std::left << std::setw(10) << key.first << std::setw(10) << key.second << std::setw(17) << name
+                << std::right << std::fixed << std::setprecision(2) << std::setw(6) << group.size() << std::setw(8)
+                << rate * 100 << "%" << std::setw(10) << median(times) << std::setw(9) << mean(times) << std::setw(12)
+                << median(lengths) << std::setw(8) << mean(grasps) << "\n" << std::defaultfloat;
+    }
+  }
+  std::cerr << "total " << total_s << " s\n";
+  if (!o.out.empty()) {
+    nlohmann::json all = nlohmann::json::array();
+    for (const Run& r : runs)
+      all.push_back({{"task", r.task}, {"robot", r.robot}, {"pose", r.pose}, {"seed", r.seed}, {"solved", r.solved},
+                     {"valid", r.solved && r.raw.valid}, {"message", r.solved ? r.raw.message : r.message},
+                     {"planning_time_s", r.time_s}, {"iterations", r.iterations}, {"trees", r.trees},
+                     {"nodes", r.nodes}, {"path_length_rad", r.raw.length.robot},
+                     {"shortened_path_length_rad", r.shortened.length.robot}, {"grasps", r.raw.grasps}});
+    write_json_file_atomic(o.out, {{"format", "demoplan-bench"}, {"version", 1}, {"from", o.from}, {"rows", rows}, {"runs", all}});
+  }
+  if (!o.ompl_log.empty()) {
+    const std::string stem = o.ompl_log.size() > 4 && o.ompl_log.substr(o.ompl_log.size() - 4) == ".log"
+                                 ? o.ompl_log.substr(0, o.ompl_log.size() - 4) : o.ompl_log;
+    for (const auto& [key, group] : groups)
+      write_ompl_log(stem + "_" + key.first + "_" + key.second + ".log", key.first + " " + key.second, group,
+                     group.front()->time_limit, total_s);
+  }
+  if (o.json) std::cout << nlohmann::json{{"rows", rows}}.dump() << std::endl;
+  return kOk;
+}
+
+}  // namespace
+
+Command register_bench_command(CLI::App& app) {
+  auto opts = std::make_shared<BenchOptions>();
+  CLI::App* sub = app.add_subcommand("bench", "run the benchmark protocol and validate every path");
+  sub->add_option("--tasks", opts->tasks, "comma-separated tasks")->capture_default_str();
+  sub->add_option("--robots", opts->robots, "comma-separated robots")->capture_default_str();
+  sub->add_option("--poses", opts->poses, "robot base pose ids, e.g. 0-4")->capture_default_str();
+  sub->add_option("--seeds", opts->seeds, "seeds, e.g. 1-10")->capture_default_str();
+  sub->add_option("--time-limit", opts->time_limit, "seconds per run")->capture_default_str();
+  sub->add_option("--waiter-time-limit", opts->waiter_time_limit, "seconds per run of the waiter task (paper: 300)")
+      ->capture_default_str();
+  sub->add_option("--from", opts->from, "object poses from the cleaned key poses or the raw video estimates")
+      ->check(CLI::IsMember({"raw", "subgoals"}))->capture_default_str();
+  sub->add_option("--jobs", opts->jobs, "runs in parallel")->check(CLI::PositiveNumber)->capture_default_str();
+  sub->add_option("--out", opts->out, "write every run and the table as JSON");
+  sub->add_option("--ompl-log", opts->ompl_log, "also write OMPL benchmark logs, one per task and robot");
+  sub->add_flag("--json", opts->json, "print {\"rows\": [...]} on stdout");
+  add_data_dir_option(*sub, opts->data_dir);
+  return {sub, [opts] { return run_bench(*opts); }};
+}
+
+}  // namespace demoplan::cli
