@@ -77,6 +77,10 @@ public:
     }
   }
   int nearest(int state, const Eigen::VectorXd& q) const { return all_[state].nearest(q); }
+  int random_node(int state, std::mt19937_64& rng) const {
+    const auto& ids = all_[state].ids();
+    return ids[std::uniform_int_distribution<size_t>(0, ids.size() - 1)(rng)];
+  }
   int nearest_in(int state, int group, const Eigen::VectorXd& q) const {
     return by_group_.at({state, group}).nearest(q);
   }
@@ -214,11 +218,25 @@ private:
 
   // Alg. 1, lines 4-14: a new tree at a sampled transition, linked to the trees of its states.
   void sample_tree() {
-    std::uniform_int_distribution<size_t> pick(0, graph_.transitions.size() - 1);
-    const int t = static_cast<int>(pick(rng_));
-    const TransitionSample s = projector_.sample_on_transition(t, rng_);
+    // The paper draws k uniformly. Transitions that already root trees are drawn less often, so
+    // the rare ones (a handle reachable from few arm configurations) get the samples.
+    int t;
+    if (params_.balance_transitions) {
+      std::vector<double> w;
+      for (int n : sampled_) w.push_back(1.0 / (1.0 + n));
+      t = std::discrete_distribution<int>(w.begin(), w.end())(rng_);
+    } else {
+      t = std::uniform_int_distribution<int>(0, static_cast<int>(graph_.transitions.size()) - 1)(rng_);
+    }
+    // Seed the projection from a random node already in the state the transition leaves, when
+    // there is one: the root then tends to lie near a tree and in the same IK branch.
+    const int from = graph_.transitions[t].from;
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const TransitionSample s = (forest_.state_size(from) > 0 && u(rng_) < params_.seed_from_trees)
+                                   ? projector_.sample_on_transition(t, forest_.node(forest_.random_node(from, rng_)).q, rng_)
+                                   : projector_.sample_on_transition(t, rng_);
     if (!s.ok || !validity_.transition_free(s, data_)) return;
-    sampled_[t] = 1;
+    ++sampled_[t];
     const GraphTransition& tr = graph_.transitions[t];
     const int tree = forest_.new_tree();
     ++trees_created_;
@@ -254,7 +272,7 @@ private:
   void attempt_link(int id) {
     const int state = forest_.node(id).state;
     for (int group : forest_.groups_in(state)) {
-      if (cancelled()) return;
+      if (cancelled() || elapsed() >= params_.time_limit) return;
       if (forest_.find(group) != group || forest_.find(forest_.node(id).tree) == group) continue;
       const Eigen::VectorXd q = forest_.node(id).q;
       int last = forest_.nearest_in(state, group, q);
@@ -347,7 +365,7 @@ private:
   CollisionData data_;
   Forest forest_;
   std::mt19937_64 rng_;
-  std::vector<char> sampled_;
+  std::vector<int> sampled_;  // collision-free roots per transition
   int start_ = -1, goal_ = -1;
   long iterations_ = 0;
   int trees_created_ = 0;

@@ -16,11 +16,17 @@ namespace demoplan {
 struct PlannerParams {
   double eta_sample_tree = 0.1;  // probability of rooting a new tree at a sampled transition
   double step = 0.3;             // delta: tree growth step, joint-space Euclidean (rad, m)
-  double resolution = 0.01;      // edges are collision-checked every this much (as the validator)
+  // Edges are collision-checked every this much: half the validator's 0.01, so a validator
+  // sample is never more than 0.0025 rad from a checked one.
+  double resolution = 0.005;
   long max_iterations = 10'000'000;
   double time_limit = 60.0;      // s, wall clock
   std::uint64_t seed = 1;
   double progress_period = 0.05;  // s between progress callbacks
+  // Beyond the paper: draw transitions with weight 1 / (1 + roots they already have) instead of
+  // uniformly, and seed a transition's projection from a node of its source state this often.
+  bool balance_transitions = true;
+  double seed_from_trees = 0.5;
 };
 
 // One edge added since the previous snapshot, for drawing the trees grow.
