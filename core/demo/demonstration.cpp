@@ -120,6 +120,10 @@ void set_object_pose(Demonstration& d, size_t event, int object, const Pose& pos
 }
 
 void save_demonstration(const std::string& path, const Demonstration& d) {
+  write_json_file_atomic(path, demonstration_to_json(d));
+}
+
+Json demonstration_to_json(const Demonstration& d) {
   Json j{{"format", kFormat},
          {"version", kVersion},
          {"pose_convention", "4x4 row-major pose of the object frame, metres, in the world or, where "
@@ -143,11 +147,14 @@ void save_demonstration(const std::string& path, const Demonstration& d) {
     events.push_back(std::move(ev));
   }
   j["events"] = events;
-  write_json_file_atomic(path, j);
+  return j;
 }
 
 Demonstration load_demonstration(const std::string& path) {
-  const Json json = read_json_file(path);
+  return demonstration_from_json(read_json_file(path), path);
+}
+
+Demonstration demonstration_from_json(const Json& json, const std::string& path) {
   const JsonField root(json, path);
   if (root["format"].string() != kFormat) root["format"].fail(std::string("expected ") + kFormat);
   if (root["version"].integer() != kVersion)

@@ -1,6 +1,7 @@
 #pragma once
 // What the video shows: when the hand grasps and releases which object, and where every
 // object is at those moments (Sec. III-A of the paper). Editable by the operator.
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,5 +59,9 @@ void set_object_pose(Demonstration& demo, size_t event, int object, const Pose& 
 // world transforms in metres. Saving is atomic. Loading throws InputError.
 void save_demonstration(const std::string& path, const Demonstration& demo);
 Demonstration load_demonstration(const std::string& path);
+// The same JSON as a value, to embed in another file (a project). `source` names the file (and
+// the field, e.g. "project.json: demonstration") in errors.
+nlohmann::json demonstration_to_json(const Demonstration& demo);
+Demonstration demonstration_from_json(const nlohmann::json& json, const std::string& source);
 
 }  // namespace demoplan
