@@ -19,6 +19,10 @@ Command register_graph_command(CLI::App& app);
 Command register_plan_command(CLI::App& app);
 Command register_validate_command(CLI::App& app);
 Command register_bench_command(CLI::App& app);
+Command register_synth_command(CLI::App& app);
+Command register_extract_command(CLI::App& app);
+Command register_evaluate_command(CLI::App& app);
+Command register_export_command(CLI::App& app);
 
 // The benchmark data folder: --data-dir, else $DEMOPLAN_DATA_DIR, else the bundled copy.
 std::string default_data_dir();

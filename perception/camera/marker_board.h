@@ -1,8 +1,9 @@
 #pragma once
 // An ArUco grid board (markers_x by markers_y markers) lying at a known pose in the world, e.g.
 // flat on the table: seen by the camera, it gives the camera's pose in the world.
-// Board frame (OpenCV's): origin at the outer corner of the bottom-left marker, x along the
-// rows, y along the columns, z out of the board (up when it lies on a table face up).
+// Board frame (OpenCV 4.6's GridBoard): origin at the top-left corner of marker first_id, x to
+// the right along the first row, y down the printed page towards the next rows, z into the
+// board (so z points down when the board lies face up on a table).
 #include <string>
 
 #include <opencv2/aruco.hpp>

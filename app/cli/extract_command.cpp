@@ -1,0 +1,98 @@
+// demoplan-cli extract: grasp/release events and part poses from a demonstration video.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli/command.h"
+#include "core/demo/demonstration.h"
+#include "core/error.h"
+#include "perception/camera/camera_model.h"
+#include "perception/extraction/extract_demonstration.h"
+#include "perception/extraction/tracks_file.h"
+#include "perception/markers/marker_scene.h"
+
+namespace demoplan::cli {
+
+namespace {
+
+struct ExtractCliOptions {
+  std::string video, camera, scene, detections, hands, out;
+  bool board = false;
+  bool json = false;
+};
+
+int run_extract(const ExtractCliOptions& o) {
+  const perception::MarkerScene scene = perception::load_marker_scene(o.scene);
+  std::string camera_path = o.camera;
+  if (camera_path.empty()) {
+    if (scene.camera.empty()) throw InputError(o.scene, "camera", "no camera file given (use --camera)");
+    camera_path = (std::filesystem::path(o.scene).parent_path() / scene.camera).string();
+  }
+  const perception::Camera camera = perception::load_camera(camera_path);
+  perception::ExtractionOptions options;
+  options.bop_csv = o.detections;
+  options.hands_json = o.hands;
+  options.board_extrinsics = o.board;
+  options.camera_source = camera_path;
+  const perception::ExtractionResult r = perception::extract_demonstration(o.video, camera, scene, options);
+  save_demonstration(o.out, r.demonstration);
+  const std::string tracks = perception::tracks_path_for(o.out);
+  perception::save_tracks_file(tracks, r);
+  const auto issues = validate(r.demonstration);
+
+  const Demonstration& d = r.demonstration;
+  std::cerr << "extracted " << d.events.size() << " events from " << o.video << " (" << r.frames << " frames, "
+            << static_cast<int>(r.frames_per_second) << " frames/s, camera pose from " << r.extrinsics_source << ")\n";
+  for (const auto& e : d.events)
+    std::cerr << "  frame " << e.frame << "  " << (e.type == EventType::Grasp ? "grasp  " : "release") << "  "
+              << d.object_ids[e.object] << "  confidence " << e.confidence << "\n";
+  for (const auto& w : r.warnings) std::cerr << "  warning: " << w << "\n";
+  for (const auto& i : issues) std::cerr << "  issue: " << i.message << "\n";
+  std::cerr << "  wrote " << o.out << " and " << tracks << "\n";
+  if (o.json) {
+    nlohmann::json events = nlohmann::json::array();
+    for (const auto& e : d.events)
+      events.push_back({{"frame", e.frame},
+                        {"object", d.object_ids[e.object]},
+                        {"type", e.type == EventType::Grasp ? "grasp" : "release"},
+                        {"confidence", e.confidence}});
+    nlohmann::json iss = nlohmann::json::array();
+    for (const auto& i : issues) iss.push_back(i.message);
+    std::cout << nlohmann::json{{"video", o.video},
+                                {"frames", r.frames},
+                                {"fps", d.fps},
+                                {"events", events},
+                                {"extraction_fps", r.frames_per_second},
+                                {"extraction_time_s", r.seconds},
+                                {"extrinsics", r.extrinsics_source},
+                                {"demonstration", o.out},
+                                {"tracks", tracks},
+                                {"warnings", r.warnings},
+                                {"issues", iss}}
+                     .dump()
+              << std::endl;
+  }
+  return issues.empty() ? kOk : kFailed;
+}
+
+}  // namespace
+
+Command register_extract_command(CLI::App& app) {
+  auto o = std::make_shared<ExtractCliOptions>();
+  CLI::App* sub = app.add_subcommand("extract", "extract grasp/release events and part poses from a demonstration video");
+  sub->add_option("video", o->video, "the video (mp4, avi, mkv)")->required();
+  sub->add_option("--scene", o->scene, "marker scene (demoplan-marker-scene JSON)")->required()->check(CLI::ExistingFile);
+  sub->add_option("--camera", o->camera, "camera (demoplan-camera JSON or OpenCV YAML); default: the scene's")
+      ->check(CLI::ExistingFile);
+  sub->add_option("--detections", o->detections, "6D pose estimates, BOP results CSV")->check(CLI::ExistingFile);
+  sub->add_option("--hands", o->hands, "hand-contact detections (100DOH, demoplan-hand-detections JSON)")
+      ->check(CLI::ExistingFile);
+  sub->add_option("--out", o->out, "demonstration to write (the tracks go beside it, <stem>.tracks.json)")->required();
+  sub->add_flag("--board-extrinsics", o->board, "find the camera pose from the board even if the camera file gives it");
+  sub->add_flag("--json", o->json, "print one JSON object on stdout");
+  return {sub, [o] { return run_extract(*o); }};
+}
+
+}  // namespace demoplan::cli

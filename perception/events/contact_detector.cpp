@@ -1,0 +1,241 @@
+#include "perception/events/contact_detector.h"
+
+#include "perception/tracking/pose_average.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace demoplan::perception {
+
+namespace {
+
+double angle_between(const Pose& a, const Pose& b) {
+  return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  const size_t m = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(m), v.end());
+  return v[m];
+}
+
+// Component-wise median translation and chordal mean rotation.
+Pose centre_of(const std::vector<const PoseSample*>& s) {
+  PoseList poses;
+  for (const auto* p : s) poses.push_back(p->pose);
+  return median_pose(poses);
+}
+
+struct Thresholds {
+  double rest_t, rest_r, move_t, move_r;
+};
+
+bool overlaps(const MotionInterval& a, const MotionInterval& b) { return a.start < b.end && b.start < a.end; }
+
+// Whether two parts kept their relative position while both moved.
+bool move_together(const PoseTracks& tracks, const MotionInterval& a, const MotionInterval& b, double tolerance) {
+  const int f0 = std::max(a.start, b.start), f1 = std::min(a.end, b.end);
+  std::vector<Eigen::Vector3d> rel;
+  for (int f = f0; f <= f1; ++f) {
+    const PoseSample& sa = tracks.samples[a.object][f];
+    const PoseSample& sb = tracks.samples[b.object][f];
+    if (sa.valid && sb.valid) rel.push_back(sa.pose.inverse() * sb.pose.translation());
+  }
+  if (rel.size() < 3) return false;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& r : rel) mean += r / static_cast<double>(rel.size());
+  for (const auto& r : rel)
+    if ((r - mean).norm() > tolerance) return false;
+  return true;
+}
+
+}  // namespace
+
+std::vector<MotionInterval> ContactAnalysis::motions_of(int object) const {
+  std::vector<MotionInterval> out;
+  for (const auto* list : {&carries, &transports})
+    for (const auto& m : *list)
+      if (m.object == object) out.push_back(m);
+  std::sort(out.begin(), out.end(), [](auto& a, auto& b) { return a.start < b.start; });
+  return out;
+}
+
+std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& samples, int object,
+                                           const ContactDetectorOptions& o, double* jitter_t, double* jitter_r) {
+  std::vector<int> frames;
+  for (int f = 0; f < static_cast<int>(samples.size()); ++f)
+    if (samples[f].valid && samples[f].confidence >= o.min_confidence) frames.push_back(f);
+  std::vector<MotionInterval> out;
+  if (frames.size() < 2) return out;
+  auto at = [&](int i) -> const PoseSample& { return samples[frames[i]]; };
+
+  // Jitter from second differences over three consecutive frames: a smooth motion hardly
+  // changes its velocity from frame to frame, noise does. For Gaussian noise of sigma per axis
+  // the second difference has sigma * sqrt(6) per axis, and the median norm of three such
+  // axes is about 1.54 of that.
+  std::vector<double> d2t, d2r;
+  for (size_t i = 1; i + 1 < frames.size(); ++i) {
+    if (frames[i] - frames[i - 1] != 1 || frames[i + 1] - frames[i] != 1) continue;
+    const Pose &a = at(i - 1).pose, &b = at(i).pose, &c = at(i + 1).pose;
+    d2t.push_back((c.translation() - 2 * b.translation() + a.translation()).norm());
+    d2r.push_back((log3(b.linear().transpose() * c.linear()) - log3(a.linear().transpose() * b.linear())).norm());
+  }
+  constexpr double kSecondDifference = 1.54 * 2.449;
+  const double sigma_t = median(d2t) / kSecondDifference, sigma_r = median(d2r) / kSecondDifference;
+  if (jitter_t) *jitter_t = sigma_t;
+  if (jitter_r) *jitter_r = sigma_r;
+  Thresholds th;
+  th.rest_t = std::max(o.rest_translation, o.noise_factor * sigma_t);
+  th.rest_r = std::max(o.rest_rotation, o.noise_factor * sigma_r);
+  th.move_t = std::max(o.move_translation, 2.5 * th.rest_t);
+  th.move_r = std::max(o.move_rotation, 2.5 * th.rest_r);
+  auto still = [&](const Pose& p, const Pose& ref) {
+    return (p.translation() - ref.translation()).norm() <= th.rest_t && angle_between(p, ref) <= th.rest_r;
+  };
+  auto beyond = [&](const Pose& p, const Pose& ref) {
+    return (p.translation() - ref.translation()).norm() > th.move_t || angle_between(p, ref) > th.move_r;
+  };
+
+  const int n = static_cast<int>(frames.size());
+  std::vector<int> rest{0}, moving;
+  Pose ref = at(0).pose, start_ref = ref;
+  bool in_motion = false;
+  int run = 0;
+  MotionInterval cur;
+  cur.object = object;
+  auto rest_centre = [&]() {
+    std::vector<const PoseSample*> tail;
+    for (size_t k = rest.size() > 30 ? rest.size() - 30 : 0; k < rest.size(); ++k) tail.push_back(&at(rest[k]));
+    return centre_of(tail);
+  };
+  for (int i = 1; i < n; ++i) {
+    const Pose& p = at(i).pose;
+    if (!in_motion) {
+      if (still(p, ref)) {
+        rest.push_back(i);
+        moving.clear();
+        run = 0;
+        ref = rest_centre();
+        continue;
+      }
+      moving.push_back(i);
+      if (beyond(p, ref)) ++run;
+      if (run < o.min_moving_frames) {
+        // Samples that settle a little off the rest pose (it was estimated from few or poor
+        // samples) make the rest pose anew.
+        const int m = static_cast<int>(moving.size());
+        if (m >= o.min_rest_frames) {
+          std::vector<const PoseSample*> window;
+          for (int k = m - o.min_rest_frames; k < m; ++k) window.push_back(&at(moving[k]));
+          const Pose centre = centre_of(window);
+          bool settled = true;
+          for (const auto* w : window) settled = settled && still(w->pose, centre);
+          if (settled && !beyond(centre, ref)) {
+            rest.assign(moving.end() - o.min_rest_frames, moving.end());
+            ref = rest_centre();
+            moving.clear();
+            run = 0;
+          }
+        }
+        continue;
+      }
+      in_motion = true;
+      start_ref = ref;
+      const int last_rest = rest.back();
+      cur.start = frames[last_rest];
+      // A part hidden just before it moved: its grasp frame is uncertain.
+      const int gap = frames[moving.front()] - frames[last_rest];
+      cur.start_confidence = at(last_rest).confidence * std::exp(-(gap - 1) / 10.0);
+      cur.distance = 0;
+      for (int k : moving) cur.distance = std::max(cur.distance, (at(k).pose.translation() - start_ref.translation()).norm());
+      continue;
+    }
+    moving.push_back(i);
+    cur.distance = std::max(cur.distance, (p.translation() - start_ref.translation()).norm());
+    const int m = static_cast<int>(moving.size());
+    if (m < o.min_rest_frames) continue;
+    std::vector<const PoseSample*> window;
+    for (int k = m - o.min_rest_frames; k < m; ++k) window.push_back(&at(moving[k]));
+    const Pose centre = centre_of(window);
+    bool settled = true;
+    for (const auto* s : window) settled = settled && still(s->pose, centre);
+    if (!settled) continue;
+    // At rest again: it came to rest at the earliest sample that is still at the new pose.
+    int j = m - o.min_rest_frames;
+    while (j > 0 && still(at(moving[j - 1]).pose, centre)) --j;
+    cur.end = frames[moving[j]];
+    const int gap = j > 0 ? frames[moving[j]] - frames[moving[j - 1]] : 1;
+    cur.end_confidence = at(moving[j]).confidence * std::exp(-(gap - 1) / 10.0);
+    const bool displaced = (centre.translation() - start_ref.translation()).norm() > th.move_t ||
+                           angle_between(centre, start_ref) > th.move_r;
+    if (cur.distance >= o.min_carry_distance || displaced) out.push_back(cur);
+    rest.assign(moving.begin() + j, moving.end());
+    ref = rest_centre();
+    moving.clear();
+    run = 0;
+    in_motion = false;
+  }
+  if (in_motion) {  // still moving at the end of the video: it rests at its last sample
+    cur.end = frames.back();
+    cur.end_confidence = 0.3;
+    out.push_back(cur);
+  }
+  return out;
+}
+
+ContactAnalysis detect_contacts(const PoseTracks& tracks, const ContactDetectorOptions& o) {
+  ContactAnalysis a;
+  const int n = static_cast<int>(tracks.object_ids.size());
+  a.jitter_translation.assign(n, 0.0);
+  a.jitter_rotation.assign(n, 0.0);
+  std::vector<MotionInterval> all;
+  for (int k = 0; k < n; ++k) {
+    auto m = detect_motions(tracks.samples[k], k, o, &a.jitter_translation[k], &a.jitter_rotation[k]);
+    all.insert(all.end(), m.begin(), m.end());
+  }
+  std::sort(all.begin(), all.end(), [](auto& x, auto& y) { return x.start < y.start; });
+  // Groups of motions that overlap in time.
+  std::vector<bool> done(all.size(), false);
+  for (size_t i = 0; i < all.size(); ++i) {
+    if (done[i]) continue;
+    std::vector<size_t> group{i};
+    done[i] = true;
+    for (size_t g = 0; g < group.size(); ++g)
+      for (size_t j = 0; j < all.size(); ++j)
+        if (!done[j] && overlaps(all[group[g]], all[j])) {
+          done[j] = true;
+          group.push_back(j);
+        }
+    std::vector<bool> together(group.size(), false);
+    for (size_t x = 0; x < group.size(); ++x)
+      for (size_t y = x + 1; y < group.size(); ++y) {
+        const auto& mx = all[group[x]];
+        const auto& my = all[group[y]];
+        if (mx.object != my.object && overlaps(mx, my) && move_together(tracks, mx, my, o.co_motion_tolerance))
+          together[x] = together[y] = true;
+      }
+    // The hand carries one part at a time: the parts that moved farthest, without overlaps.
+    std::vector<size_t> order;
+    for (size_t x = 0; x < group.size(); ++x)
+      if (!together[x] && tracks.planning[all[group[x]].object]) order.push_back(x);
+    std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return all[group[x]].distance > all[group[y]].distance; });
+    std::vector<bool> carried(group.size(), false);
+    for (size_t x : order) {
+      bool free = true;
+      for (size_t y = 0; y < group.size(); ++y) free = free && !(carried[y] && overlaps(all[group[x]], all[group[y]]));
+      carried[x] = free;
+    }
+    for (size_t x = 0; x < group.size(); ++x) {
+      const auto& m = all[group[x]];
+      if (carried[x]) a.carries.push_back(m);
+      else if (together[x] || !tracks.planning[m.object]) a.transports.push_back(m);
+      else a.rejected.push_back(m);
+    }
+  }
+  std::sort(a.carries.begin(), a.carries.end(), [](auto& x, auto& y) { return x.start < y.start; });
+  return a;
+}
+
+}  // namespace demoplan::perception

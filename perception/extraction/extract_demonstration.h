@@ -1,0 +1,53 @@
+#pragma once
+// The whole extraction: video + camera + marker scene (+ optional BOP pose estimates and hand
+// contacts) -> per-frame part poses -> grasp/release events -> Demonstration.
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/demo/demonstration.h"
+#include "perception/camera/camera_model.h"
+#include "perception/events/contact_detector.h"
+#include "perception/events/hand_fusion.h"
+#include "perception/markers/marker_detector.h"
+#include "perception/markers/marker_scene.h"
+#include "perception/tracking/marker_tracker.h"
+#include "perception/tracking/pose_track.h"
+
+namespace demoplan::perception {
+
+struct ExtractionOptions {
+  MarkerDetectorOptions detector;
+  MarkerTrackerOptions tracker;
+  ContactDetectorOptions contacts;
+  HandFusionOptions hands;
+  std::string bop_csv;     // optional BOP results file
+  std::string hands_json;  // optional hand-contact detections
+  std::string camera_source = "camera";  // names the camera file in messages
+  bool board_extrinsics = false;  // estimate the camera pose from the board even if the file gives one
+  int board_frames = 10;          // frames (with the board seen) averaged for the camera pose
+  double bop_weight = 0.5;
+  std::function<void(int done, int total)> progress;
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+struct ExtractionResult {
+  Demonstration demonstration;
+  PoseTracks raw, smoothed;
+  ContactAnalysis contacts;
+  Pose world_T_camera = Pose::Identity();
+  std::string extrinsics_source;  // "file" or "board (N frames)"
+  int frames = 0;
+  double seconds = 0.0;           // wall time of the whole extraction
+  double frames_per_second = 0.0;
+  std::vector<std::string> warnings;
+  bool cancelled = false;  // then only `frames` and the timing are meaningful
+};
+
+// Throws InputError for unreadable or inconsistent inputs (naming the file and the frame,
+// line or field).
+ExtractionResult extract_demonstration(const std::string& video, const Camera& camera, const MarkerScene& scene,
+                                       const ExtractionOptions& options = {});
+
+}  // namespace demoplan::perception

@@ -1,0 +1,111 @@
+#include "perception/synthetic/camera_placement.h"
+
+#include <cmath>
+#include <limits>
+
+namespace demoplan::perception {
+
+namespace {
+
+Pose look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
+  const Eigen::Vector3d z = (target - eye).normalized();
+  const Eigen::Vector3d x = z.cross(Eigen::Vector3d::UnitZ()).normalized();
+  Pose T = Pose::Identity();
+  T.linear().col(0) = x;
+  T.linear().col(1) = z.cross(x);
+  T.linear().col(2) = z;
+  T.translation() = eye;
+  return T;
+}
+
+}  // namespace
+
+bool segment_hits_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::AlignedBox3d& box) {
+  const Eigen::Vector3d d = b - a;
+  double t0 = 0, t1 = 1 - 0.05 / std::max(d.norm(), 0.06);
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(d[i]) < 1e-12) {
+      if (a[i] < box.min()[i] || a[i] > box.max()[i]) return false;
+      continue;
+    }
+    double u = (box.min()[i] - a[i]) / d[i], v = (box.max()[i] - a[i]) / d[i];
+    if (u > v) std::swap(u, v);
+    t0 = std::max(t0, u);
+    t1 = std::min(t1, v);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+Camera place_camera(const DemoScript& s, const std::vector<Eigen::AlignedBox3d>& obstacles,
+                    const CameraPlacementOptions& o) {
+  // The points to keep in view: every part's box corners along the video (every 3rd frame).
+  std::vector<Eigen::Vector3d> points, rest_centres;
+  for (int f = 0; f < s.frames; f += 3)
+    for (size_t k = 0; k < s.object_ids.size(); ++k)
+      for (int c = 0; c < 8; ++c)
+        points.push_back(s.poses[f][k] * s.bounds[k].corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
+  std::vector<int> rest_frames{0};
+  for (const auto& c : s.carries) rest_frames.push_back(c.release);
+  for (int f : rest_frames)
+    for (size_t k = 0; k < s.object_ids.size(); ++k) {
+      // The centre and the corners pulled in a little (corners on the support are hidden anyway).
+      const Eigen::Vector3d c = s.bounds[k].center();
+      rest_centres.push_back(s.poses[f][k] * c);
+      for (int i = 0; i < 8; ++i)
+        rest_centres.push_back(s.poses[f][k] * (c + 0.8 * (s.bounds[k].corner(static_cast<Eigen::AlignedBox3d::CornerType>(i)) - c)));
+    }
+  Eigen::AlignedBox3d all;
+  for (const auto& p : points) all.extend(p);
+  const Eigen::Vector3d target = all.center();
+
+  Camera best;
+  best.image_size = o.image_size;
+  best.fx = best.fy = o.fx;
+  best.cx = (o.image_size.width - 1) / 2.0;
+  best.cy = (o.image_size.height - 1) / 2.0;
+  double best_score = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < o.azimuths * static_cast<int>(o.elevations.size()); ++a) {
+    const double az = 2 * M_PI * (a % o.azimuths) / o.azimuths;
+    const double el = o.elevations[a / o.azimuths];
+    const Eigen::Vector3d dir(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+    // The closest distance at which everything fits.
+    double distance = -1;
+    for (double d = 0.8; d < 8.0; d += 0.05) {
+      const Pose T = look_at(target + d * dir, target);
+      const Pose inv = T.inverse();
+      bool fits = true;
+      for (const auto& p : points) {
+        const Eigen::Vector3d q = inv * p;
+        const double u = o.fx * q.x() / q.z() + best.cx, v = o.fx * q.y() / q.z() + best.cy;
+        if (q.z() < 0.3 || u < o.margin_px || v < o.margin_px || u > o.image_size.width - o.margin_px ||
+            v > o.image_size.height - o.margin_px) {
+          fits = false;
+          break;
+        }
+      }
+      if (fits) {
+        distance = d;
+        break;
+      }
+    }
+    if (distance < 0) continue;
+    const Eigen::Vector3d eye = target + distance * dir;
+    int hidden = 0;
+    for (const auto& c : rest_centres)
+      for (const auto& box : obstacles)
+        if (!box.contains(c) && segment_hits_box(eye, c, box)) {
+          ++hidden;
+          break;
+        }
+    const double score = hidden * 0.1 + distance;  // a hidden point costs as much as 10 cm farther
+    if (score < best_score) {
+      best_score = score;
+      best.world_T_camera = look_at(eye, target);
+    }
+  }
+  if (!best.world_T_camera) best.world_T_camera = look_at(target + 4.0 * Eigen::Vector3d(0, -0.7, 0.7), target);
+  return best;
+}
+
+}  // namespace demoplan::perception

@@ -1,0 +1,29 @@
+#pragma once
+// Where to put the camera of a synthetic video: looking down at the parts' whole motion at a
+// fixed elevation, from the azimuth where no furniture hides a resting part and the view is
+// tightest (largest markers), with the focal length of a typical 1280x720 webcam.
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "perception/camera/camera_model.h"
+#include "perception/synthetic/demo_script.h"
+
+namespace demoplan::perception {
+
+struct CameraPlacementOptions {
+  cv::Size image_size{1280, 720};
+  double fx = 1100.0;            // px (about 60 degrees horizontal field of view)
+  std::vector<double> elevations{0.6, 0.75, 0.9};  // rad above the horizontal, tried in turn
+  double margin_px = 60.0;       // keep the motion this far inside the image border
+  int azimuths = 24;
+};
+
+// Whether the segment from a to b (its last 5 cm excluded) crosses the box.
+bool segment_hits_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::AlignedBox3d& box);
+
+// `obstacles`: world boxes of furniture that may hide parts (not the floor).
+Camera place_camera(const DemoScript& script, const std::vector<Eigen::AlignedBox3d>& obstacles,
+                    const CameraPlacementOptions& options = {});
+
+}  // namespace demoplan::perception

@@ -1,0 +1,50 @@
+#include "perception/synthetic/marker_layout.h"
+
+#include <algorithm>
+
+#include "perception/markers/marker_dictionary.h"
+
+namespace demoplan::perception {
+
+namespace {
+int cells_with_border(const std::string& dictionary) { return marker_dictionary(dictionary)->markerSize + 2; }
+}  // namespace
+
+std::vector<ObjectMarker> box_face_markers(const Eigen::AlignedBox3d& bounds, int first_id,
+                                           const MarkerLayoutOptions& options) {
+  const Eigen::Vector3d c = bounds.center(), h = bounds.sizes() / 2;
+  std::vector<ObjectMarker> out;
+  int id = first_id;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sign : {+1, -1}) {
+      const Eigen::Vector3d z = sign * Eigen::Vector3d::Unit(axis);
+      // The printed image's "up": +z of the part on its sides, +x on top and bottom.
+      const Eigen::Vector3d y = axis == 2 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitZ();
+      const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+      ObjectMarker m;
+      m.id = id++;
+      m.size = std::min(options.max_size, options.face_fraction * 2 * std::min(h[a1], h[a2]));
+      m.object_T_marker.linear().col(0) = y.cross(z);
+      m.object_T_marker.linear().col(1) = y;
+      m.object_T_marker.linear().col(2) = z;
+      m.object_T_marker.translation() = c + z * (h[axis] + options.standoff);
+      out.push_back(m);
+    }
+  return out;
+}
+
+cv::Mat marker_image(const std::string& dictionary, int id, int cell_pixels) {
+  const int cells = cells_with_border(dictionary);
+  cv::Mat inner;
+  cv::aruco::drawMarker(marker_dictionary(dictionary), id, cells * cell_pixels, inner, 1);
+  cv::Mat out(inner.rows + 2 * cell_pixels, inner.cols + 2 * cell_pixels, CV_8U, cv::Scalar(255));
+  inner.copyTo(out(cv::Rect(cell_pixels, cell_pixels, inner.cols, inner.rows)));
+  return out;
+}
+
+double printed_marker_side(const std::string& dictionary, double size) {
+  const int cells = cells_with_border(dictionary);
+  return size * (cells + 2) / cells;
+}
+
+}  // namespace demoplan::perception

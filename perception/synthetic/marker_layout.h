@@ -1,0 +1,29 @@
+#pragma once
+// Markers for synthetic parts: one square ArUco marker centred on each face of the part's
+// bounding box (6 per part, ids first_id .. first_id + 5), and their printed images.
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+#include "perception/markers/marker_scene.h"
+
+namespace demoplan::perception {
+
+struct MarkerLayoutOptions {
+  double max_size = 0.08;       // m, black square side
+  double face_fraction = 0.7;   // of the face's shorter side (the white margin must fit too)
+  double standoff = 0.001;      // m, in front of the box face
+};
+
+std::vector<ObjectMarker> box_face_markers(const Eigen::AlignedBox3d& bounds, int first_id,
+                                           const MarkerLayoutOptions& options = {});
+
+// The printed marker: black border and bits (cells of `cell_pixels`) plus a white margin one
+// cell wide all around, 8-bit grey.
+cv::Mat marker_image(const std::string& dictionary, int id, int cell_pixels = 16);
+// Side of the printed square, white margin included, for a marker of black side `size`.
+double printed_marker_side(const std::string& dictionary, double size);
+
+}  // namespace demoplan::perception

@@ -1,0 +1,343 @@
+#include "perception/synthetic/synthetic_video.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <variant>
+
+#include <opencv2/imgproc.hpp>
+
+#include "core/demo/benchmark_scene.h"
+#include "core/demo/benchmark_task.h"
+#include "core/error.h"
+#include "core/model/kinematics.h"
+#include "core/model/robot_model.h"
+#include "perception/camera/camera_model.h"
+#include "perception/importers/bop_csv.h"
+#include "perception/importers/hand_detections.h"
+#include "perception/markers/marker_scene.h"
+#include "perception/synthetic/board_placement.h"
+#include "perception/synthetic/camera_placement.h"
+#include "perception/synthetic/demo_script.h"
+#include "perception/synthetic/hand_model.h"
+#include "perception/synthetic/image_degradation.h"
+#include "perception/synthetic/marker_layout.h"
+#include "perception/synthetic/rasterizer.h"
+#include "perception/video/video_writer.h"
+
+namespace demoplan::perception {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kDictionary = "DICT_4X4_100";
+constexpr int kMarkersPerPart = 6;
+
+struct Placed {
+  RenderMesh mesh;
+  Pose pose;
+};
+
+struct Assets {
+  std::vector<Placed> furniture;
+  std::vector<Eigen::AlignedBox3d> obstacles;
+  std::vector<RenderMesh> parts;  // planning objects, task order
+  std::optional<Pose> table_top;
+  Eigen::Vector2d table_size = Eigen::Vector2d::Zero();
+};
+
+cv::Vec3f bgr_of(const Eigen::Vector4d& rgba) { return {float(rgba[2] * 255), float(rgba[1] * 255), float(rgba[0] * 255)}; }
+
+RenderMesh mesh_of(const Geometry& g) {
+  if (const auto* b = std::get_if<BoxShape>(&g.shape)) return box_mesh(b->size, bgr_of(g.color));
+  if (const auto* c = std::get_if<CylinderShape>(&g.shape)) return cylinder_mesh(c->radius, c->length, bgr_of(g.color));
+  if (const auto* m = std::get_if<MeshShape>(&g.shape); m && m->mesh) return render_mesh(*m->mesh, m->scale, Pose::Identity());
+  return {};
+}
+
+Assets load_assets(const BenchmarkTask& task) {
+  Assets a;
+  MeshCache cache;
+  for (const auto& f : task.furniture) {
+    const RobotModel model = load_urdf(f.urdf);
+    PoseVector links;
+    forward_kinematics(model, Eigen::VectorXd::Zero(model.nq), Pose::Identity(), links);
+    double best_area = 0;
+    for (size_t l = 0; l < model.links.size(); ++l)
+      for (const auto& g : model.links[l].visuals) {
+        if (g.color[3] < 0.5) continue;  // the tunnel's see-through closing walls
+        RenderMesh m = mesh_of(g);
+        if (m.triangles.empty()) continue;
+        const Pose pose = links[l] * g.origin;
+        Eigen::AlignedBox3d box;
+        for (const auto& v : m.vertices) box.extend(pose * v.cast<double>());
+        a.obstacles.push_back(box);
+        if (const auto* b = std::get_if<BoxShape>(&g.shape); b && f.kind == "table" && b->size.x() * b->size.y() > best_area) {
+          best_area = b->size.x() * b->size.y();
+          a.table_top = links[l];
+          a.table_size = b->size.head<2>();
+        }
+        a.furniture.push_back({std::move(m), pose});
+      }
+  }
+  UrdfOptions options;
+  options.load_visual_meshes = true;
+  options.mesh_cache = &cache;
+  for (const auto& id : task.planning_object_ids) {
+    const auto it = std::find_if(task.objects.begin(), task.objects.end(), [&](auto& o) { return o.id == id; });
+    const RobotModel model = load_urdf(it->urdf, options);
+    RenderMesh part;
+    for (const auto& g : model.links.front().visuals) {
+      RenderMesh m = mesh_of(g);
+      if (part.triangles.empty()) {
+        part = std::move(m);
+        if (!g.origin.isApprox(Pose::Identity())) {
+          for (auto& v : part.vertices) v = g.origin.cast<float>() * v;
+        }
+      } else {
+        part.append(m, g.origin);
+      }
+    }
+    if (part.triangles.empty()) throw InputError(it->urdf, "visual", "the part has no visual geometry to draw");
+    a.parts.push_back(std::move(part));
+  }
+  return a;
+}
+
+// A large floor of tiles, centred below `centre`.
+RenderMesh floor_mesh(const Eigen::Vector3d& centre) {
+  RenderMesh m;
+  const float h = 6.0f, x = float(centre.x()), y = float(centre.y());
+  m.vertices = {{x - h, y - h, 0.f}, {x + h, y - h, 0.f}, {x + h, y + h, 0.f}, {x - h, y + h, 0.f}};
+  m.uvs = {{0.f, 0.f}, {1.f, 0.f}, {1.f, 1.f}, {0.f, 1.f}};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m.texture.create(768, 768, CV_8UC3);
+  cv::RNG rng(12345);
+  for (int r = 0; r < 24; ++r)
+    for (int c = 0; c < 24; ++c) {
+      const int g = 95 + ((r + c) % 2) * 20 + rng.uniform(-6, 7);
+      m.texture(cv::Rect(c * 32, r * 32, 32, 32)).setTo(cv::Scalar(g + 4, g, g - 6));
+    }
+  return m;
+}
+
+// The marker images, one per id.
+struct MarkerArt {
+  std::map<int, cv::Mat> images;
+  const cv::Mat& get(int id) {
+    auto it = images.find(id);
+    if (it == images.end()) it = images.emplace(id, marker_image(kDictionary, id)).first;
+    return it->second;
+  }
+};
+
+Pose marker_frame_on_board(const std::vector<cv::Point3f>& c) {
+  // Corners: top-left, top-right, bottom-right, bottom-left of the printed marker.
+  Eigen::Vector3d p[4];
+  for (int k = 0; k < 4; ++k) p[k] = {c[k].x, c[k].y, c[k].z};
+  Pose T = Pose::Identity();
+  const Eigen::Vector3d x = (p[1] - p[0]).normalized(), y = (p[0] - p[3]).normalized();
+  T.linear().col(0) = x;
+  T.linear().col(1) = y;
+  T.linear().col(2) = x.cross(y);
+  T.translation() = (p[0] + p[1] + p[2] + p[3]) / 4;
+  return T;
+}
+
+// Pixel box of world points; empty when any is behind the camera.
+cv::Rect2d pixel_box(const Rasterizer& r, const std::vector<Eigen::Vector3d>& points) {
+  double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
+  for (const auto& p : points) {
+    const auto q = r.project(p);
+    if (!q) return {};
+    x0 = std::min(x0, q->x()), y0 = std::min(y0, q->y()), x1 = std::max(x1, q->x()), y1 = std::max(y1, q->y());
+  }
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+std::vector<Eigen::Vector3d> box_corners(const Eigen::AlignedBox3d& b, const Pose& pose) {
+  std::vector<Eigen::Vector3d> out;
+  for (int c = 0; c < 8; ++c) out.push_back(pose * b.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
+  return out;
+}
+
+}  // namespace
+
+SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::string& out_dir) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const BenchmarkTask task = load_benchmark_task(o.data_dir, o.task);
+  const auto pose_ids = benchmark_pose_ids(task, o.robot);
+  if (std::find(pose_ids.begin(), pose_ids.end(), o.robot_pose) == pose_ids.end())
+    throw InputError(task.file, "robot_poses", "task " + o.task + " has no pose " + std::to_string(o.robot_pose) +
+                                                   " for robot '" + o.robot + "'");
+  if (o.noise_sigma < 0 || o.blur_px < 0) throw InputError("synth options", "noise/blur", "must be >= 0");
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (!fs::is_directory(out_dir)) throw InputError(out_dir, "", "cannot create the output folder");
+
+  const Assets assets = load_assets(task);
+  std::vector<Eigen::AlignedBox3d> bounds;
+  for (const auto& p : assets.parts) bounds.push_back(p.bounds().cast<double>());
+  DemoScript script = make_demo_script(task, bounds, o.time_scale);
+  Camera camera = place_camera(script, assets.obstacles);
+  add_hand(script, camera.world_T_camera->translation());
+  if (o.board && assets.table_top) {
+    MarkerBoard board;
+    board.dictionary = kDictionary;
+    board.markers_x = 3;
+    board.markers_y = 2;
+    board.marker_length = 0.07;
+    board.marker_separation = 0.015;
+    board.first_id = 90;
+    camera.board = place_board(script, *assets.table_top, assets.table_size, camera, assets.obstacles, board);
+  }
+
+  MarkerScene markers;
+  markers.task = task.name();
+  markers.robot = o.robot;
+  markers.robot_pose = o.robot_pose;
+  markers.camera = "camera.json";
+  markers.dictionary = kDictionary;
+  for (size_t k = 0; k < script.object_ids.size(); ++k)
+    markers.objects.push_back({script.object_ids[k], true, box_face_markers(bounds[k], kMarkersPerPart * static_cast<int>(k))});
+
+  // The static part: floor, furniture, board.
+  const Pose& world_T_camera = *camera.world_T_camera;
+  Rasterizer r(camera.image_size, camera.fx, camera.fy, camera.cx, camera.cy, world_T_camera);
+  r.clear({205, 190, 175}, {150, 140, 130});
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& p : script.poses.front()) centre += p.translation() / double(script.poses.front().size());
+  r.draw(floor_mesh(centre), Pose::Identity());
+  for (const auto& f : assets.furniture) r.draw(f.mesh, f.pose);
+  MarkerArt art;
+  if (camera.board) {
+    const MarkerBoard& b = *camera.board;
+    const auto grid = b.make();
+    Pose paper = b.world_T_board;
+    Eigen::AlignedBox3d extent;
+    for (const auto& m : grid->objPoints)
+      for (const auto& c : m) extent.extend(Eigen::Vector3d(c.x, c.y, c.z));
+    paper.translation() = b.world_T_board * Eigen::Vector3d(extent.center().x(), extent.center().y(), 0.0004);  // behind the markers
+    r.draw(box_mesh({extent.sizes().x() + 0.04, extent.sizes().y() + 0.04, 0.0004}, {245, 245, 245}), paper);
+    for (size_t i = 0; i < grid->objPoints.size(); ++i)
+      r.draw_marker(art.get(grid->ids[i]), printed_marker_side(kDictionary, b.marker_length),
+                    b.world_T_board * marker_frame_on_board(grid->objPoints[i]));
+  }
+  const cv::Mat static_color = r.color().clone(), static_depth = r.depth().clone();
+
+  const RenderMesh hand = hand_mesh();
+  const RenderMesh tray = box_mesh(script.tray_size, {60, 90, 120});
+  const RenderMesh pole = cylinder_mesh(0.05, 0.8, {70, 60, 55});
+  cv::RNG blur_rng(o.seed * 2654435761u + 17);
+  Degradation degradation{o.noise_sigma, o.blur_px, blur_rng.uniform(0.0, M_PI)};
+
+  SynthOutput out;
+  out.fps = script.fps;
+  out.frames = script.frames;
+  // MP4 holds MPEG-4 and H.264; lossless FFV1 needs Matroska, MJPG goes in AVI.
+  const std::string ext = o.fourcc == "FFV1" ? ".mkv" : o.fourcc == "MJPG" ? ".avi" : ".mp4";
+  out.video = (fs::path(out_dir) / ("video" + ext)).string();
+  out.camera = (fs::path(out_dir) / "camera.json").string();
+  out.scene = (fs::path(out_dir) / "scene.json").string();
+  out.truth = (fs::path(out_dir) / "truth.json").string();
+  VideoWriter writer(out.video, script.fps, camera.image_size, o.fourcc);
+  std::vector<BopDetection> bop;
+  std::vector<HandFrame> hands;
+  cv::RNG detection_rng(o.seed * 7919u + 5);
+  const Eigen::AlignedBox3d palm(Eigen::Vector3d(-0.05, -0.0425, -0.015), Eigen::Vector3d(0.05, 0.0425, 0.015));
+  for (int f = 0; f < script.frames; ++f) {
+    if (o.cancel && o.cancel->load()) {
+      out.cancelled = true;
+      return out;  // the writer removes its partial file
+    }
+    r.restore(static_color, static_depth);
+    if (script.tray[f]) {
+      Pose T = *script.tray[f];
+      T.translation() -= T.linear().col(2) * (script.tray_size.z() / 2);
+      r.draw(tray, T);
+    }
+    for (size_t k = 0; k < script.object_ids.size(); ++k) {
+      const Pose& P = script.poses[f][k];
+      r.draw(assets.parts[k], P);
+      for (const auto& m : markers.objects[k].markers)
+        r.draw_marker(art.get(m.id), printed_marker_side(kDictionary, m.size), P * m.object_T_marker);
+    }
+    r.draw(hand, script.hand[f]);
+    if (o.occlusion)
+      for (const auto& c : script.carries) {
+        const int d = c.release - c.grasp, a = c.grasp + int(0.3 * d), b = c.grasp + int(0.7 * d);
+        if (f < a || f > b || b <= a) continue;
+        const int mid = (a + b) / 2;
+        const Eigen::Vector3d part = script.poses[mid][c.object] * bounds[c.object].center();
+        const Eigen::Vector3d eye = world_T_camera.translation();
+        const double s = double(f - a) / (b - a);
+        Pose T = Pose::Identity();
+        T.translation() = part + 0.45 * (eye - part) + world_T_camera.linear().col(0) * (0.3 * (s - 0.5));
+        r.draw(pole, T);
+      }
+    if (o.detections) {
+      // A pose estimator sees every part whose centre is not hidden; a hand detector boxes the palm.
+      for (size_t k = 0; k < script.object_ids.size(); ++k) {
+        const Pose P = script.poses[f][k];
+        const auto c = r.project(P * bounds[k].center());
+        if (!c || c->x() < 0 || c->y() < 0 || c->x() >= camera.image_size.width || c->y() >= camera.image_size.height) continue;
+        const double radius = bounds[k].sizes().norm() / 2;
+        if (r.depth().at<float>(int(c->y()), int(c->x())) < c->z() - radius - 0.01) continue;
+        BopDetection d;
+        d.image_id = f;
+        d.object_id = bop_object_id(script.object_ids[k]);
+        d.score = 0.9;
+        d.camera_T_object = world_T_camera.inverse() * P;
+        const Eigen::Vector3d w(detection_rng.gaussian(0.01), detection_rng.gaussian(0.01), detection_rng.gaussian(0.01));
+        d.camera_T_object.linear() = d.camera_T_object.linear() * Eigen::AngleAxisd(w.norm(), w.norm() > 0 ? w.normalized() : Eigen::Vector3d::UnitZ()).toRotationMatrix();
+        d.camera_T_object.translation() += Eigen::Vector3d(detection_rng.gaussian(0.002), detection_rng.gaussian(0.002), detection_rng.gaussian(0.004));
+        d.time = 0.05;
+        bop.push_back(d);
+      }
+      HandFrame hf;
+      hf.frame = f;
+      HandDetection h;
+      h.box = pixel_box(r, box_corners(palm, script.hand[f]));
+      h.score = 0.95;
+      for (const auto& c : script.carries)
+        if (f >= c.grasp && f < c.release) {  // in contact: the grasp frame up to the release (excluded)
+          const cv::Rect2d ob = pixel_box(r, box_corners(bounds[c.object], script.poses[f][c.object]));
+          if (ob.area() <= 0) break;
+          hf.objects.push_back({ob, 0.9});
+          h.contact = HandContact::Portable;
+          const double dx = ob.x + ob.width / 2 - (h.box.x + h.box.width / 2), dy = ob.y + ob.height / 2 - (h.box.y + h.box.height / 2);
+          const double len = std::hypot(dx, dy);
+          h.magnitude = len / 10000.0;
+          h.dx = len > 0 ? dx / len : 0.0;
+          h.dy = len > 0 ? dy / len : 0.0;
+        }
+      if (h.box.area() > 0) hf.hands.push_back(h);
+      hands.push_back(hf);
+    }
+    cv::Mat frame = r.color().clone();
+    cv::RNG noise_rng(o.seed * 1000003u + static_cast<unsigned>(f));
+    degrade(frame, degradation, noise_rng);
+    writer.write(frame);
+    if (o.progress) o.progress(f + 1, script.frames);
+  }
+  writer.finish();
+  save_camera(out.camera, camera);
+  save_marker_scene(out.scene, markers);
+  const Demonstration truth = script.truth();
+  save_demonstration(out.truth, truth);
+  out.events = static_cast<int>(truth.events.size());
+  if (o.detections) {
+    out.bop_csv = (fs::path(out_dir) / "bop.csv").string();
+    out.hands = (fs::path(out_dir) / "hands.json").string();
+    save_bop_csv(out.bop_csv, bop);
+    save_hand_detections(out.hands, hands);
+  }
+  out.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace demoplan::perception

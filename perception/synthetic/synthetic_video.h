@@ -1,0 +1,45 @@
+#pragma once
+// Synthetic demonstration videos of benchmark tasks, for tests, benchmarks and the bundled
+// sample: the task's furniture and textured YCB-V parts with ArUco markers on their faces, a
+// hand carrying each part from its grasp to its release, seen by a calibrated camera, with the
+// ground truth beside the video. Headless and deterministic for a given seed.
+//
+// Writes into the output folder: video.mp4 (video.mkv for FFV1, video.avi for MJPG), camera.json (demoplan-camera), scene.json
+// (demoplan-marker-scene), truth.json (demoplan-demonstration) and, on request, bop.csv and
+// hands.json (simulated outputs of a 6D pose estimator and of a hand-contact detector).
+#include <atomic>
+#include <functional>
+#include <string>
+
+namespace demoplan::perception {
+
+struct SynthOptions {
+  std::string data_dir;  // benchmark data folder (gtamp)
+  std::string task = "shelf_1";
+  std::string robot = "panda";  // the robot scene the demonstration is for (recorded in scene.json)
+  int robot_pose = 0;
+  double noise_sigma = 0.0;  // grey levels
+  double blur_px = 0.0;      // motion blur length, pixels
+  bool occlusion = false;    // a pole passes in front of every carried part
+  unsigned seed = 1;
+  double time_scale = 1.0;   // < 1: a shorter video
+  std::string fourcc = "mp4v";
+  bool board = true;         // an ArUco board on the table for the camera extrinsics
+  bool detections = false;   // also write bop.csv and hands.json
+  std::function<void(int done, int total)> progress;
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+struct SynthOutput {
+  std::string video, camera, scene, truth, bop_csv, hands;
+  int frames = 0;
+  int events = 0;
+  double fps = 30.0;
+  double render_seconds = 0.0;
+  bool cancelled = false;  // then no file was written
+};
+
+// Throws InputError for an unknown task, robot or pose, or a task without subgoals.
+SynthOutput write_synthetic_demonstration(const SynthOptions& options, const std::string& out_dir);
+
+}  // namespace demoplan::perception

@@ -1,0 +1,48 @@
+#include "perception/tracking/pose_average.h"
+
+#include <algorithm>
+
+namespace demoplan::perception {
+
+Eigen::Matrix3d mean_rotation(const std::vector<Eigen::Matrix3d>& rotations) {
+  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  for (const auto& R : rotations) sum += R;
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(sum, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d U = svd.matrixU();
+  if ((U * svd.matrixV().transpose()).determinant() < 0) U.col(2) *= -1;
+  return U * svd.matrixV().transpose();
+}
+
+Pose mean_pose(const PoseList& poses) {
+  Pose out = Pose::Identity();
+  std::vector<Eigen::Matrix3d> R;
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
+  for (const auto& p : poses) {
+    R.push_back(p.linear());
+    t += p.translation();
+  }
+  out.linear() = mean_rotation(R);
+  out.translation() = t / static_cast<double>(std::max<size_t>(1, poses.size()));
+  return out;
+}
+
+Pose median_pose(const PoseList& poses) {
+  Pose out = mean_pose(poses);
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<double> v;
+    for (const auto& p : poses) v.push_back(p.translation()[axis]);
+    if (v.empty()) break;
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+    out.translation()[axis] = v[v.size() / 2];
+  }
+  return out;
+}
+
+Pose interpolate(const Pose& a, const Pose& b, double s) {
+  Pose out = Pose::Identity();
+  out.translation() = (1 - s) * a.translation() + s * b.translation();
+  out.linear() = Eigen::Quaterniond(a.linear()).slerp(s, Eigen::Quaterniond(b.linear())).toRotationMatrix();
+  return out;
+}
+
+}  // namespace demoplan::perception

@@ -1,0 +1,35 @@
+#pragma once
+// Per-frame pose estimates of every tracked part: what the event detector reads and what the
+// UI draws under the video.
+#include <string>
+#include <vector>
+
+#include "core/demo/benchmark_task.h"
+#include "core/geometry/se3.h"
+
+namespace demoplan::perception {
+
+struct PoseSample {
+  bool valid = false;
+  Pose pose = Pose::Identity();  // world_T_object
+  double confidence = 0.0;       // 0..1
+  int markers = 0;               // markers it was computed from (0: another source)
+  double reprojection_px = 0.0;
+  bool ambiguous = false;        // the planar two-fold ambiguity was resolved from other frames
+};
+
+struct PoseTracks {
+  double fps = 30.0;
+  int frames = 0;
+  std::vector<std::string> object_ids;
+  std::vector<bool> planning;                  // per object: part of the plan (not a tray)
+  std::vector<std::vector<PoseSample>> samples;  // [object][frame]
+
+  int object_index(const std::string& id) const;
+  void resize(int frames);
+};
+
+// Tracks of the raw per-frame estimates of a benchmark task (objects_poses), all valid.
+PoseTracks tracks_from_benchmark(const BenchmarkTask& task, double fps = 30.0);
+
+}  // namespace demoplan::perception

@@ -1,0 +1,92 @@
+// Plan runs in the background without stalling the event loop; Cancel returns the UI to idle at
+// once and leaves it usable: planning again works and solves the sample.
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QtTest>
+
+#include "ui/document/document.h"
+#include "ui/widgets/planner_panel.h"
+#include "ui_test_support.h"
+
+using namespace demoplan;
+using namespace demoplan::ui;
+
+class TestPlannerPanel : public QObject {
+  Q_OBJECT
+private slots:
+  void planThenCancelLeavesTheUiUsable() {
+    Document doc(test::dataDir().toStdString());
+    doc.open(test::sampleProject());
+    // A job that cannot finish on its own within the test: plenty of time, no shortcut.
+    PlannerSettings s = doc.plannerSettings();
+    s.planner.time_limit = 120;
+    s.planner.eta_sample_tree = 0.0;  // no video guidance: much slower to solve
+    doc.setPlannerSettings(s);
+    PlannerPanel panel(&doc);
+    panel.show();
+    QVERIFY(panel.planButton()->isEnabled());
+    QVERIFY(!panel.cancelButton()->isEnabled());
+
+    test::StallMeter meter;
+    meter.start();
+    QTest::mouseClick(panel.planButton(), Qt::LeftButton);
+    QVERIFY(doc.planner()->isRunning());
+    QVERIFY(!panel.planButton()->isEnabled());
+    QVERIFY(panel.cancelButton()->isEnabled());
+    // It makes progress: snapshots arrive and the state table fills.
+    QVERIFY(test::waitFor([&] { return doc.planner()->lastSnapshot().iterations > 0; }, 5000));
+    QTest::qWait(400);
+    const double stall = meter.stop();
+    qInfo("longest event-loop stall while planning: %.1f ms", stall);
+    QVERIFY2(stall < 100.0, qPrintable(QStringLiteral("event loop stalled %1 ms").arg(stall)));
+    QVERIFY(panel.stateTable()->rowCount() > 0);
+    QVERIFY(panel.progressBar()->value() > 0);
+
+    QElapsedTimer t;
+    t.start();
+    QTest::mouseClick(panel.cancelButton(), Qt::LeftButton);
+    QVERIFY(test::waitFor([&] { return !doc.planner()->isRunning() && panel.planButton()->isEnabled(); }, 1000));
+    const qint64 cancel_ms = t.elapsed();
+    qInfo("idle %lld ms after Cancel", cancel_ms);
+    QVERIFY(cancel_ms < 100);
+    QVERIFY(!panel.cancelButton()->isEnabled());
+    QVERIFY(panel.messageLabel()->text().contains(QStringLiteral("Cancelled")));
+    QCOMPARE(doc.stepState(Step::Plan).status, StepStatus::Warning);
+
+    // Usable again: the default settings solve the sample.
+    doc.setPlannerSettings(PlannerSettings{});
+    QTest::mouseClick(panel.planButton(), Qt::LeftButton);
+    QVERIFY(doc.planner()->isRunning());
+    QVERIFY(test::waitFor([&] { return !doc.planner()->isRunning(); }, 30000));
+    QVERIFY(doc.result() != nullptr);
+    QVERIFY2(doc.result()->summary.solved, doc.result()->summary.message.c_str());
+    QVERIFY2(doc.result()->summary.valid, doc.result()->summary.message.c_str());
+    QCOMPARE(doc.stepState(Step::Plan).status, StepStatus::Ok);
+    QVERIFY(panel.messageLabel()->text().contains(QStringLiteral("valid")));
+    // Every placement of the demonstration was reached (grasp states exist per handle; the
+    // path needs one handle per part).
+    int placements = 0;
+    for (int r = 0; r < panel.stateTable()->rowCount(); ++r) {
+      if (!panel.stateTable()->item(r, 0)->text().startsWith(QLatin1Char('P'))) continue;
+      ++placements;
+      QVERIFY2(panel.stateTable()->item(r, 1)->text().toInt() > 0, qPrintable(panel.stateTable()->item(r, 0)->text()));
+    }
+    QVERIFY(placements >= 3);
+  }
+
+  void planIsRefusedWhileTheDemonstrationIsBroken() {
+    Document doc(test::dataDir().toStdString());
+    doc.open(test::sampleProject());
+    PlannerPanel panel(&doc);
+    doc.removeEvent(0);
+    QVERIFY(!panel.planButton()->isEnabled());
+    QVERIFY(!doc.startPlanning());
+    panel.plan();
+    QVERIFY(panel.messageLabel()->text().contains(QStringLiteral("release without a grasp")));
+  }
+};
+
+DEMOPLAN_UI_TEST_MAIN(TestPlannerPanel)
+#include "test_planner_panel.moc"

@@ -1,0 +1,123 @@
+// Editing events through the timeline changes the demonstration; undo restores it; a broken rule
+// is shown with its reason and jumps to the event.
+#include <QLabel>
+#include <QUndoStack>
+#include <QtTest>
+
+#include "ui/document/document.h"
+#include "ui/widgets/timeline_widget.h"
+#include "ui_test_support.h"
+
+using namespace demoplan;
+using namespace demoplan::ui;
+
+class TestTimeline : public QObject {
+  Q_OBJECT
+  std::unique_ptr<Document> doc_;
+  std::unique_ptr<TimelinePanel> panel_;
+  Json original_;
+
+  TimelineWidget* timeline() { return panel_->timeline(); }
+
+private slots:
+  void init() {
+    doc_ = std::make_unique<Document>(test::dataDir().toStdString());
+    doc_->open(test::sampleProject());
+    original_ = demonstration_to_json(doc_->demonstration());
+    panel_ = std::make_unique<TimelinePanel>(doc_.get());
+    panel_->resize(900, 160);
+    panel_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(panel_.get()));
+  }
+  void cleanup() {
+    panel_.reset();
+    doc_.reset();
+  }
+
+  void dragMovesAnEventAndUndoRestoresIt() {
+    const int ev = 1;  // release of YCBV_05 at frame 48
+    QCOMPARE(doc_->demonstration().events[ev].frame, 48);
+    const QPoint from = timeline()->markerRect(ev).center().toPoint();
+    const QPoint to(int(timeline()->frameToX(55)), from.y());
+    QTest::mousePress(timeline(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(timeline(), from + QPoint(5, 0));
+    QTest::mouseMove(timeline(), to);
+    QTest::mouseRelease(timeline(), Qt::LeftButton, {}, to);
+    QCOMPARE(doc_->demonstration().events[ev].frame, 55);
+    QCOMPARE(doc_->selectedEvent(), ev);
+    QCOMPARE(doc_->currentFrame(), 55);
+    QCOMPARE(doc_->undoStack()->count(), 1);
+    QVERIFY(doc_->isModified());
+    doc_->undoStack()->undo();
+    QCOMPARE(doc_->demonstration().events[ev].frame, 48);
+    QCOMPARE(demonstration_to_json(doc_->demonstration()), original_);
+    QVERIFY(!doc_->isModified());
+    doc_->undoStack()->redo();
+    QCOMPARE(doc_->demonstration().events[ev].frame, 55);
+  }
+
+  void clickSelectsAndScrubs() {
+    QTest::mouseClick(timeline(), Qt::LeftButton, {}, timeline()->markerRect(2).center().toPoint());
+    QCOMPARE(doc_->selectedEvent(), 2);
+    QCOMPARE(doc_->selectedObject(), doc_->demonstration().events[2].object);
+    const QPoint empty(int(timeline()->frameToX(120)), TimelineWidget::kRuler / 2);
+    QTest::mouseClick(timeline(), Qt::LeftButton, {}, empty);
+    QCOMPARE(doc_->currentFrame(), 120);
+    QCOMPARE(doc_->undoStack()->count(), 0);  // selecting and scrubbing are not edits
+  }
+
+  void doubleClickAddsTheEventThatAlternates() {
+    const int lane = 0;  // YCBV_02: held from 60 to 97
+    const int y = timeline()->laneTop(lane) + TimelineWidget::kLane / 2;
+    QTest::mouseDClick(timeline(), Qt::LeftButton, {}, QPoint(int(timeline()->frameToX(120)), y));
+    const auto& d = doc_->demonstration();
+    QCOMPARE(int(d.events.size()), 5);
+    QCOMPARE(d.events.back().frame, 120);
+    QCOMPARE(d.events.back().type, EventType::Grasp);  // not held there
+    QCOMPARE(d.events.back().object, lane);
+    // A grasp never released breaks a rule: the panel says so.
+    QVERIFY(!doc_->issues().empty());
+    QVERIFY2(panel_->validityLabel()->text().contains(QStringLiteral("never released")),
+             qPrintable(panel_->validityLabel()->text()));
+    QCOMPARE(doc_->stepState(Step::Events).status, StepStatus::Error);
+    doc_->undoStack()->undo();
+    QVERIFY(doc_->issues().empty());
+    QCOMPARE(demonstration_to_json(doc_->demonstration()), original_);
+    QVERIFY(panel_->validityLabel()->text().contains(QStringLiteral("valid")));
+  }
+
+  void brokenRuleLinksToItsEvent() {
+    doc_->removeEvent(0);  // the grasp of YCBV_05: its release now has no grasp
+    QVERIFY(!doc_->issues().empty());
+    const auto& issue = doc_->issues().front();
+    QVERIFY2(QString::fromStdString(issue.message).contains(QStringLiteral("release without a grasp")), issue.message.c_str());
+    QVERIFY(panel_->validityLabel()->text().contains(QStringLiteral("href='issue:0'")));
+    doc_->setCurrentFrame(0);
+    panel_->jumpToIssue(0);
+    QCOMPARE(doc_->selectedEvent(), issue.event);
+    QCOMPARE(doc_->currentFrame(), doc_->demonstration().events[issue.event].frame);
+    doc_->undoStack()->undo();
+    QCOMPARE(demonstration_to_json(doc_->demonstration()), original_);
+  }
+
+  void draggingPastAnotherEventReordersAndUndoes() {
+    // Move the grasp of YCBV_02 (frame 60) before the release of YCBV_05 (48): two parts held.
+    const QPoint from = timeline()->markerRect(2).center().toPoint();
+    const QPoint to(int(timeline()->frameToX(30)), from.y());
+    QTest::mousePress(timeline(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(timeline(), from - QPoint(5, 0));
+    QTest::mouseMove(timeline(), to);
+    QTest::mouseRelease(timeline(), Qt::LeftButton, {}, to);
+    const auto& d = doc_->demonstration();
+    QCOMPARE(d.events[1].frame, 30);
+    QCOMPARE(d.events[1].type, EventType::Grasp);
+    QVERIFY(!doc_->issues().empty());
+    QVERIFY2(QString::fromStdString(doc_->issues().front().message).contains(QStringLiteral("one object at a time")),
+             doc_->issues().front().message.c_str());
+    doc_->undoStack()->undo();
+    QCOMPARE(demonstration_to_json(doc_->demonstration()), original_);
+  }
+};
+
+DEMOPLAN_UI_TEST_MAIN(TestTimeline)
+#include "test_timeline.moc"

@@ -1,0 +1,795 @@
+#include "ui/mainwindow/main_window.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QCryptographicHash>
+#include <QDateTime>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QStyle>
+#include <QTimer>
+#include <QToolBar>
+#include <QUndoView>
+
+#include "core/demo/benchmark_scene.h"
+#include "core/error.h"
+#include "ui/view3d/scene_view.h"
+#include "ui/widgets/planner_panel.h"
+#include "ui/widgets/pose_editor.h"
+#include "ui/widgets/result_panel.h"
+#include "ui/widgets/step_bar.h"
+#include "ui/widgets/style.h"
+#include "ui/widgets/timeline_widget.h"
+#include "ui/widgets/transport.h"
+#include "ui/widgets/video_panel.h"
+
+namespace demoplan::ui {
+
+namespace {
+constexpr int kMaxRecent = 8;
+const char* const kProjectFilter = QT_TRANSLATE_NOOP("MainWindow", "demoplan projects (*.demoplan);;All files (*)");
+
+QString humanAge(qint64 ms) {
+  const qint64 s = ms / 1000;
+  if (s < 60) return MainWindow::tr("%1 s ago").arg(s);
+  if (s < 3600) return MainWindow::tr("%1 min ago").arg(s / 60);
+  return MainWindow::tr("%1 h ago").arg(s / 3600);
+}
+}  // namespace
+
+MainWindow::MainWindow(MainWindowOptions options, QWidget* parent)
+    : QMainWindow(parent), options_(std::move(options)) {
+  setObjectName(QStringLiteral("MainWindow"));
+  setAcceptDrops(true);
+  setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
+  doc_ = new Document(options_.data_dir, this);
+  transport_ = new Transport(doc_, this);
+  scene_view_ = new SceneView(doc_, this);
+  setCentralWidget(scene_view_);
+  createDocks();
+  createActions();
+
+  frame_label_ = new QLabel(this);
+  saved_label_ = new QLabel(this);
+  statusBar()->addPermanentWidget(frame_label_);
+  statusBar()->addPermanentWidget(saved_label_);
+
+  connect(doc_, &Document::fileChanged, this, &MainWindow::updateTitle);
+  connect(doc_, &Document::modifiedChanged, this, &MainWindow::updateTitle);
+  connect(doc_, &Document::stepsChanged, this, &MainWindow::updateSteps);
+  connect(doc_, &Document::currentFrameChanged, this, &MainWindow::updateStatus);
+  connect(doc_, &Document::displayChanged, this, &MainWindow::updateStatus);
+  connect(doc_, &Document::saved, this, [this] {
+    saved_at_ms_ = QDateTime::currentMSecsSinceEpoch();
+    updateStatus();
+  });
+  connect(doc_, &Document::projectLoaded, this, [this] {
+    saved_at_ms_ = doc_->filePath().isEmpty() ? 0 : QFileInfo(doc_->filePath()).lastModified().toMSecsSinceEpoch();
+    updateSteps();
+    updateStatus();
+  });
+  connect(doc_->planner(), &PlanRunner::progress, this, [this] { updateSteps(); });
+  connect(scene_view_, &SceneView::objectPicked, this, [this](int o) {
+    if (o >= 0) {
+      inspector_dock_->raise();
+      statusBar()->showMessage(tr("Selected %1: edit its pose in the Inspector or drag the gizmo")
+                                   .arg(QString::fromStdString(doc_->demonstration().object_ids[o])),
+                               5000);
+    }
+  });
+  connect(step_bar_, &StepBar::stepClicked, this, &MainWindow::showStep);
+  connect(result_, &ResultPanel::exportRequested, this, [this] { export_action_->trigger(); });
+
+  autosave_timer_ = new QTimer(this);
+  autosave_timer_->setInterval(options_.autosave_interval_ms);
+  connect(autosave_timer_, &QTimer::timeout, this, &MainWindow::autosaveNow);
+  autosave_timer_->start();
+  status_timer_ = new QTimer(this);
+  status_timer_->setInterval(1000);
+  connect(status_timer_, &QTimer::timeout, this, &MainWindow::updateStatus);
+  status_timer_->start();
+
+  resize(1280, 800);
+  default_state_ = saveState();
+  if (options_.restore_layout) {
+    QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+  }
+  updateTitle();
+  updateSteps();
+  updateStatus();
+  updateRecentMenu();
+}
+
+MainWindow::~MainWindow() = default;
+
+QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area) {
+  auto* dock = new QDockWidget(title, this);
+  dock->setObjectName(name);  // the key QSettings restores the layout by
+  dock->setWidget(widget);
+  dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable | QDockWidget::DockWidgetClosable);
+  addDockWidget(area, dock);
+  return dock;
+}
+
+void MainWindow::createDocks() {
+  setCorner(Qt::BottomLeftCorner, Qt::BottomDockWidgetArea);
+  setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
+  video_ = new VideoPanel(doc_, transport_, this);
+  connect(video_, &VideoPanel::openVideoRequested, this, [this] { openVideo(); });
+  video_dock_ = addDock(tr("Video"), QStringLiteral("VideoDock"), video_, Qt::LeftDockWidgetArea);
+  timeline_ = new TimelinePanel(doc_, this);
+  timeline_dock_ = addDock(tr("Timeline"), QStringLiteral("TimelineDock"), timeline_, Qt::BottomDockWidgetArea);
+  pose_editor_ = new PoseEditor(doc_, this);
+  inspector_dock_ = addDock(tr("Inspector"), QStringLiteral("InspectorDock"), pose_editor_, Qt::BottomDockWidgetArea);
+  planner_ = new PlannerPanel(doc_, this);
+  planner_dock_ = addDock(tr("Planner"), QStringLiteral("PlannerDock"), planner_, Qt::BottomDockWidgetArea);
+  result_ = new ResultPanel(doc_, this);
+  result_dock_ = addDock(tr("Result"), QStringLiteral("ResultDock"), result_, Qt::BottomDockWidgetArea);
+  history_ = new QUndoView(doc_->undoStack(), this);
+  history_->setEmptyLabel(tr("<opened>"));
+  history_dock_ = addDock(tr("History"), QStringLiteral("HistoryDock"), history_, Qt::BottomDockWidgetArea);
+  splitDockWidget(timeline_dock_, inspector_dock_, Qt::Vertical);
+  splitDockWidget(inspector_dock_, planner_dock_, Qt::Horizontal);
+  tabifyDockWidget(planner_dock_, result_dock_);
+  tabifyDockWidget(result_dock_, history_dock_);
+  planner_dock_->raise();
+  resizeDocks({video_dock_}, {470}, Qt::Horizontal);
+  resizeDocks({inspector_dock_, planner_dock_}, {330, 950}, Qt::Horizontal);
+  resizeDocks({timeline_dock_, inspector_dock_}, {118, 236}, Qt::Vertical);
+  // Plan brings the planner forward; a finished plan its result.
+  connect(doc_->planner(), &PlanRunner::started, this, [this] {
+    planner_dock_->show();
+    planner_dock_->raise();
+  });
+  connect(doc_->planner(), &PlanRunner::finished, this, [this] {
+    result_dock_->show();
+    result_dock_->raise();
+  });
+}
+
+void MainWindow::createActions() {
+  QStyle* st = style();
+  // ---- File
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  auto* new_action = file->addAction(tr("&New from Benchmark Task…"), this, &MainWindow::newFromBenchmarkDialog);
+  new_action->setShortcut(QKeySequence::New);
+  new_action->setStatusTip(tr("Start a project from a task of the bundled benchmark (scene and labelled events)"));
+  auto* open = file->addAction(st->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open…"), this, [this] {
+    if (!maybeSave()) return;
+    QSettings settings;
+    const QString f = QFileDialog::getOpenFileName(this, tr("Open project"), settings.value("lastDir").toString(),
+                                                   tr(kProjectFilter));
+    if (!f.isEmpty()) openProject(f);
+  });
+  open->setShortcut(QKeySequence::Open);
+  recent_menu_ = file->addMenu(tr("Open &Recent"));
+  file->addAction(tr("Open the &Sample Project"), this, &MainWindow::openSample);
+  file->addSeparator();
+  save_action_ = file->addAction(st->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save"), this, &MainWindow::save);
+  save_action_->setShortcut(QKeySequence::Save);
+  auto* save_as = file->addAction(tr("Save &As…"), this, [this] { saveAs(); });
+  save_as->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+S")));
+  file->addSeparator();
+  auto* video = file->addAction(tr("Open &Video…"), this, [this] { openVideo(); });
+  video->setStatusTip(tr("Open the recording of the demonstration (or drop it on the window)"));
+  file->addAction(tr("Open &Camera Calibration…"), this, [this] { openCamera(); });
+  file->addSeparator();
+  export_action_ = file->addAction(tr("&Export Program…"), this, [this] {
+    reportError(tr("Export"), tr("The exporters (UR, KUKA KRL, KUKA Sunrise, Franka, ROS, CSV) are not part of this "
+                                 "build yet. The planned path is saved with the project (<project>.path.json)."));
+  });
+  export_action_->setShortcut(QKeySequence(QStringLiteral("Ctrl+E")));
+  export_action_->setEnabled(false);
+  export_action_->setToolTip(tr("Exporters are not available in this build yet"));
+  file->addSeparator();
+  auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+  quit->setShortcut(QKeySequence::Quit);
+
+  // ---- Edit
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  undo->setIcon(st->standardIcon(QStyle::SP_ArrowBack));
+  undo->setIconText(tr("Undo"));  // the menu says what; the toolbar stays short
+  QAction* redo = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setShortcuts({QKeySequence(QStringLiteral("Ctrl+Shift+Z")), QKeySequence(QStringLiteral("Ctrl+Y"))});
+  redo->setIcon(st->standardIcon(QStyle::SP_ArrowForward));
+  redo->setIconText(tr("Redo"));
+  edit->addAction(undo);
+  edit->addAction(redo);
+  edit->addSeparator();
+  auto* add_grasp = edit->addAction(tr("Add &Grasp at Playhead"), this, [this] { addEventAtPlayhead(EventType::Grasp); });
+  add_grasp->setShortcut(QKeySequence(Qt::Key_G));
+  add_grasp->setStatusTip(tr("Add a grasp of the selected part at the current frame"));
+  auto* add_release =
+      edit->addAction(tr("Add &Release at Playhead"), this, [this] { addEventAtPlayhead(EventType::Release); });
+  add_release->setShortcut(QKeySequence(Qt::Key_R));
+  delete_action_ = edit->addAction(tr("&Delete Event"), this, [this] {
+    if (doc_->selectedEvent() >= 0) doc_->removeEvent(doc_->selectedEvent());
+  });
+  delete_action_->setShortcuts({QKeySequence(Qt::Key_Delete), QKeySequence(Qt::Key_Backspace)});
+  auto* next_issue = edit->addAction(tr("Go to the &Broken Rule"), this, [this] { timeline_->jumpToIssue(0); });
+  next_issue->setShortcut(QKeySequence(QStringLiteral("Ctrl+J")));
+
+  // ---- View
+  view_menu_ = menuBar()->addMenu(tr("&View"));
+  auto* fit = view_menu_->addAction(tr("&Fit 3D View"), scene_view_, &SceneView::fitToScene);
+  fit->setShortcut(QKeySequence(Qt::Key_F));
+  auto* trees = view_menu_->addAction(tr("Show Planner &Trees"));
+  trees->setCheckable(true);
+  trees->setChecked(true);
+  trees->setShortcut(QKeySequence(Qt::Key_T));
+  connect(trees, &QAction::toggled, scene_view_, &SceneView::setShowTrees);
+  auto* demo_view = view_menu_->addAction(tr("Show the &Demonstration"), doc_, &Document::showDemonstration);
+  demo_view->setStatusTip(tr("Show the parts where the video puts them at the playhead"));
+  auto* path_view = view_menu_->addAction(tr("Show the Planned &Path"), this, [this] { doc_->setPlaybackT(doc_->playbackT()); });
+  path_view->setStatusTip(tr("Show the robot and the parts along the planned path"));
+  view_menu_->addSeparator();
+  for (QDockWidget* d : {video_dock_, timeline_dock_, inspector_dock_, planner_dock_, result_dock_, history_dock_})
+    view_menu_->addAction(d->toggleViewAction());
+  view_menu_->addSeparator();
+  view_menu_->addAction(tr("&Reset Layout"), this, [this] { restoreState(default_state_); });
+
+  // ---- Playback
+  QMenu* play = menuBar()->addMenu(tr("&Playback"));
+  auto add = [&](QMenu* menu, const QString& text, const QKeySequence& key, auto slot) {
+    QAction* a = menu->addAction(text, this, slot);
+    a->setShortcut(key);
+    return a;
+  };
+  add(play, tr("Play / Pause"), QKeySequence(Qt::Key_Space), [this] {
+    if (doc_->displayMode() == Document::DisplayMode::Result && doc_->interpolator()) result_->togglePlay();
+    else transport_->toggle();
+  });
+  add(play, tr("One Frame Back"), QKeySequence(Qt::Key_Left), [this] { transport_->stepFrames(-1); });
+  add(play, tr("One Frame Forward"), QKeySequence(Qt::Key_Right), [this] { transport_->stepFrames(1); });
+  add(play, tr("One Second Back"), QKeySequence(Qt::SHIFT | Qt::Key_Left), [this] { transport_->stepSeconds(-1); });
+  add(play, tr("One Second Forward"), QKeySequence(Qt::SHIFT | Qt::Key_Right), [this] { transport_->stepSeconds(1); });
+  add(play, tr("Play Backward (J)"), QKeySequence(Qt::Key_J), [this] { transport_->j(); });
+  add(play, tr("Pause (K)"), QKeySequence(Qt::Key_K), [this] {
+    transport_->k();
+    result_->pause();
+  });
+  add(play, tr("Play Forward (L)"), QKeySequence(Qt::Key_L), [this] { transport_->l(); });
+  add(play, tr("First Frame"), QKeySequence(Qt::Key_Home), [this] { transport_->home(); });
+  add(play, tr("Last Frame"), QKeySequence(Qt::Key_End), [this] { transport_->end(); });
+
+  // ---- Plan
+  QMenu* plan = menuBar()->addMenu(tr("P&lan"));
+  plan_action_ = add(plan, tr("&Plan"), QKeySequence(Qt::Key_F5), [this] {
+    planner_dock_->show();
+    planner_dock_->raise();
+    planner_->plan();
+  });
+  plan_action_->setIcon(st->standardIcon(QStyle::SP_MediaPlay));
+  plan_action_->setToolTip(tr("Plan the robot motion in the background (F5)"));
+  cancel_action_ = add(plan, tr("&Cancel Planning"), QKeySequence(Qt::Key_Escape), [this] { planner_->cancel(); });
+  cancel_action_->setIcon(st->standardIcon(QStyle::SP_BrowserStop));
+  cancel_action_->setEnabled(false);
+  connect(doc_->planner(), &PlanRunner::started, this, [this] { cancel_action_->setEnabled(true); });
+  connect(doc_->planner(), &PlanRunner::finished, this, [this] { cancel_action_->setEnabled(false); });
+  connect(doc_->planner(), &PlanRunner::cancelled, this, [this] { cancel_action_->setEnabled(false); });
+
+  // ---- Help
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts)->setShortcut(QKeySequence::HelpContents);
+  help->addAction(tr("&About demoplan"), this, &MainWindow::showAbout);
+
+  // ---- Toolbar and step bar
+  QToolBar* tools = addToolBar(tr("Main"));
+  tools->setObjectName(QStringLiteral("MainToolBar"));
+  tools->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  tools->setIconSize(QSize(16, 16));
+  tools->addAction(open);
+  tools->addAction(save_action_);
+  tools->addSeparator();
+  tools->addAction(undo);
+  tools->addAction(redo);
+  tools->addSeparator();
+  tools->addAction(plan_action_);
+  tools->addAction(cancel_action_);
+  QToolBar* steps = addToolBar(tr("Steps"));
+  steps->setObjectName(QStringLiteral("StepsToolBar"));
+  step_bar_ = new StepBar(this);
+  steps->addWidget(step_bar_);
+}
+
+// --------------------------------------------------------------------------------- state
+
+void MainWindow::updateTitle() {
+  QString name = doc_->displayName();
+  if (doc_->isTemplate()) name += tr(" (sample: Save As to keep your changes)");
+  setWindowTitle(QStringLiteral("%1[*] — demoplan").arg(name));
+  setWindowModified(doc_->isModified());
+}
+
+void MainWindow::updateSteps() {
+  for (int i = 0; i < 5; ++i) step_bar_->setState(Step(i), doc_->stepState(Step(i)));
+  if (doc_->planner()->isRunning()) {
+    const PlanSnapshot& s = doc_->planner()->lastSnapshot();
+    step_bar_->setState(Step::Plan, {StepStatus::Busy, tr("Planning… %1 s, %L2 nodes").arg(s.elapsed_s, 0, 'f', 1).arg(qulonglong(s.nodes))});
+  }
+  if (!doc_->hasProject()) return;
+  const StepState exp = doc_->stepState(Step::Export);
+  if (exp.status == StepStatus::None && doc_->result() && doc_->result()->summary.valid && !doc_->resultStale())
+    step_bar_->setState(Step::Export, {StepStatus::Warning, tr("The exporters are not part of this build yet; the path is saved with the project")});
+}
+
+void MainWindow::updateStatus() {
+  if (!doc_->hasProject()) {
+    frame_label_->clear();
+    saved_label_->clear();
+    return;
+  }
+  if (doc_->displayMode() == Document::DisplayMode::Result)
+    frame_label_->setText(tr("path %1%").arg(doc_->playbackT() * 100, 0, 'f', 0));
+  else
+    frame_label_->setText(tr("frame %1/%2 · %3 s")
+                              .arg(doc_->currentFrame())
+                              .arg(doc_->frameCount() - 1)
+                              .arg(doc_->currentFrame() / doc_->fps(), 0, 'f', 1));
+  const qint64 now = QDateTime::currentMSecsSinceEpoch();
+  QString saved;
+  if (doc_->filePath().isEmpty() || doc_->isTemplate()) saved = tr("not saved yet");
+  else if (saved_at_ms_ > 0) saved = tr("project saved %1").arg(humanAge(now - saved_at_ms_));
+  if (doc_->isModified()) saved += tr(" · unsaved changes");
+  saved_label_->setText(saved);
+}
+
+QStringList MainWindow::recentFiles() const { return QSettings().value(QStringLiteral("recentFiles")).toStringList(); }
+
+void MainWindow::addRecentFile(const QString& file) {
+  QSettings settings;
+  QStringList files = settings.value(QStringLiteral("recentFiles")).toStringList();
+  const QString abs = QFileInfo(file).absoluteFilePath();
+  files.removeAll(abs);
+  files.prepend(abs);
+  while (files.size() > kMaxRecent) files.removeLast();
+  settings.setValue(QStringLiteral("recentFiles"), files);
+  settings.setValue(QStringLiteral("lastDir"), QFileInfo(abs).absolutePath());
+  updateRecentMenu();
+}
+
+void MainWindow::updateRecentMenu() {
+  recent_menu_->clear();
+  const QStringList files = recentFiles();
+  for (int i = 0; i < files.size(); ++i) {
+    QAction* a = recent_menu_->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(files[i]).fileName()), this,
+                                         [this, f = files[i]] {
+                                           if (maybeSave()) openProject(f);
+                                         });
+    a->setStatusTip(files[i]);
+  }
+  recent_menu_->setEnabled(!files.isEmpty());
+  if (!files.isEmpty()) {
+    recent_menu_->addSeparator();
+    recent_menu_->addAction(tr("Clear the List"), this, [this] {
+      QSettings().remove(QStringLiteral("recentFiles"));
+      updateRecentMenu();
+    });
+  }
+}
+
+void MainWindow::reportError(const QString& title, const QString& message) {
+  last_error_ = message;
+  statusBar()->showMessage(message, 15000);
+  if (options_.interactive) QMessageBox::critical(this, title, message);
+}
+
+void MainWindow::showStep(Step step) {
+  step_bar_->setCurrent(step);
+  auto bring = [](QDockWidget* d) {
+    d->show();
+    d->raise();
+  };
+  switch (step) {
+    case Step::Video:
+      bring(video_dock_);
+      doc_->showDemonstration();
+      break;
+    case Step::Events:
+      bring(timeline_dock_);
+      doc_->showDemonstration();
+      if (!doc_->issues().empty()) timeline_->jumpToIssue(0);
+      break;
+    case Step::Poses:
+      bring(inspector_dock_);
+      doc_->showDemonstration();
+      if (doc_->selectedEvent() < 0 && !doc_->demonstration().events.empty()) doc_->selectEvent(0);
+      break;
+    case Step::Plan:
+      bring(planner_dock_);
+      break;
+    case Step::Export:
+      bring(result_dock_);
+      if (doc_->interpolator()) doc_->setPlaybackT(doc_->playbackT());
+      break;
+  }
+  statusBar()->showMessage(doc_->stepState(step).message, 8000);
+}
+
+// ----------------------------------------------------------------------------- files
+
+bool MainWindow::maybeSave() {
+  if (!doc_->isModified() || !options_.interactive) return true;
+  const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
+                                           tr("%1 has unsaved changes. Save them?").arg(doc_->displayName()),
+                                           QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+  if (answer == QMessageBox::Cancel) return false;
+  if (answer == QMessageBox::Save) return save();
+  return true;
+}
+
+bool MainWindow::openProject(const QString& file) {
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  transport_->pause();
+  try {
+    removeAutosave();
+    doc_->open(file);
+  } catch (const std::exception& e) {
+    QApplication::restoreOverrideCursor();
+    reportError(tr("Cannot open the project"),
+                tr("%1\n\nThe project was not opened. Check the file and the field named above, or open another "
+                   "project (File > Open, or the sample).")
+                    .arg(QString::fromUtf8(e.what())));
+    return false;
+  }
+  QApplication::restoreOverrideCursor();
+  addRecentFile(file);
+  updateTitle();
+  statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(doc_->filePath())), 5000);
+  if (!doc_->videoError().isEmpty()) statusBar()->showMessage(doc_->videoError(), 10000);
+  return true;
+}
+
+bool MainWindow::openSample() {
+  if (options_.sample_project.isEmpty() || !QFileInfo::exists(options_.sample_project)) {
+    reportError(tr("No sample"), tr("The bundled sample project was not found (looked for %1). Reinstall demoplan, or "
+                                    "start from a benchmark task: File > New from Benchmark Task.")
+                                     .arg(options_.sample_project));
+    return false;
+  }
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  try {
+    removeAutosave();
+    doc_->open(options_.sample_project);
+    doc_->setTemplate(true);
+  } catch (const std::exception& e) {
+    QApplication::restoreOverrideCursor();
+    reportError(tr("Cannot open the sample"), QString::fromUtf8(e.what()));
+    return false;
+  }
+  QApplication::restoreOverrideCursor();
+  updateTitle();
+  updateStatus();
+  statusBar()->showMessage(tr("The sample project: a person moves two parts on a shelf, for a Panda. Scrub the "
+                              "video, check the events and poses, press Plan (F5)."),
+                           15000);
+  return true;
+}
+
+bool MainWindow::newFromBenchmark(const QString& task, const QString& robot, int pose) {
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  try {
+    removeAutosave();
+    doc_->newFromBenchmark(task.toStdString(), robot.toStdString(), pose);
+  } catch (const std::exception& e) {
+    QApplication::restoreOverrideCursor();
+    reportError(tr("Cannot create the project"), QString::fromUtf8(e.what()));
+    return false;
+  }
+  QApplication::restoreOverrideCursor();
+  updateTitle();
+  return true;
+}
+
+void MainWindow::newFromBenchmarkDialog() {
+  if (!maybeSave()) return;
+  QDialog dialog(this);
+  dialog.setWindowTitle(tr("New project from a benchmark task"));
+  auto* form = new QFormLayout(&dialog);
+  auto* task = new QComboBox(&dialog);
+  auto* robot = new QComboBox(&dialog);
+  auto* pose = new QSpinBox(&dialog);
+  try {
+    for (const auto& t : list_benchmark_tasks(options_.data_dir)) task->addItem(QString::fromStdString(t));
+    for (const auto& r : list_benchmark_robots(options_.data_dir)) robot->addItem(QString::fromStdString(r));
+  } catch (const std::exception& e) {
+    reportError(tr("Benchmark data"), QString::fromUtf8(e.what()));
+    return;
+  }
+  task->setCurrentText(QStringLiteral("shelf_1"));
+  robot->setCurrentText(QStringLiteral("panda"));
+  pose->setRange(0, 99);
+  pose->setToolTip(tr("The robot's base pose id in the task"));
+  form->addRow(tr("Task"), task);
+  form->addRow(tr("Robot"), robot);
+  form->addRow(tr("Robot pose"), pose);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+  form->addRow(buttons);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  if (dialog.exec() != QDialog::Accepted) return;
+  newFromBenchmark(task->currentText(), robot->currentText(), pose->value());
+}
+
+bool MainWindow::save() {
+  if (!doc_->hasProject()) return false;
+  if (doc_->filePath().isEmpty() || doc_->isTemplate()) return saveAs();
+  try {
+    doc_->save();
+  } catch (const std::exception& e) {
+    reportError(tr("Cannot save"), tr("%1\n\nYour work is still open. Save it elsewhere (File > Save As).")
+                                       .arg(QString::fromUtf8(e.what())));
+    return false;
+  }
+  removeAutosave();
+  addRecentFile(doc_->filePath());
+  statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(doc_->filePath())), 5000);
+  return true;
+}
+
+bool MainWindow::saveAs(const QString& file_in) {
+  if (!doc_->hasProject()) return false;
+  QString file = file_in;
+  if (file.isEmpty()) {
+    if (!options_.interactive) return false;
+    QSettings settings;
+    QString suggestion = settings.value(QStringLiteral("lastDir"), QDir::homePath()).toString() + QLatin1Char('/') +
+                         QString::fromStdString(doc_->sceneReference().task) + QStringLiteral(".demoplan");
+    file = QFileDialog::getSaveFileName(this, tr("Save project as"), suggestion, tr(kProjectFilter));
+    if (file.isEmpty()) return false;
+  }
+  if (QFileInfo(file).suffix().isEmpty()) file += QStringLiteral(".demoplan");
+  const QString old_autosave = autosavePath();
+  try {
+    doc_->saveAs(file);
+  } catch (const std::exception& e) {
+    reportError(tr("Cannot save"), tr("%1\n\nYour work is still open. Choose another folder.").arg(QString::fromUtf8(e.what())));
+    return false;
+  }
+  QFile::remove(old_autosave);
+  QFile::remove(old_autosave + QStringLiteral(".origin"));
+  removeAutosave();
+  addRecentFile(file);
+  updateTitle();
+  statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(doc_->filePath())), 5000);
+  return true;
+}
+
+bool MainWindow::openVideo(const QString& file_in) {
+  if (!doc_->hasProject()) {
+    reportError(tr("Open video"), tr("Open or create a project first: the video belongs to a project."));
+    return false;
+  }
+  QString file = file_in;
+  if (file.isEmpty()) {
+    if (!options_.interactive) return false;
+    file = QFileDialog::getOpenFileName(this, tr("Open video"), QFileInfo(doc_->filePath()).absolutePath(),
+                                        tr("Videos (*.mp4 *.avi *.mkv *.mov *.m4v *.webm);;All files (*)"));
+    if (file.isEmpty()) return false;
+  }
+  doc_->setVideo(file);
+  if (!doc_->videoError().isEmpty()) {
+    reportError(tr("Cannot open the video"),
+                doc_->videoError() + tr("\n\nCheck that the file is a complete video (mp4, avi, mkv) and try another."));
+    return false;
+  }
+  statusBar()->showMessage(tr("Video %1: %2 frames").arg(QFileInfo(file).fileName()).arg(doc_->frameCount()), 5000);
+  return true;
+}
+
+bool MainWindow::openCamera(const QString& file_in) {
+  if (!doc_->hasProject()) return false;
+  QString file = file_in;
+  if (file.isEmpty()) {
+    if (!options_.interactive) return false;
+    file = QFileDialog::getOpenFileName(this, tr("Open camera calibration"), QFileInfo(doc_->filePath()).absolutePath(),
+                                        tr("Camera files (*.json *.yaml *.yml *.xml);;All files (*)"));
+    if (file.isEmpty()) return false;
+  }
+  doc_->setCamera(file);
+  if (!doc_->cameraError().isEmpty()) {
+    reportError(tr("Cannot read the camera calibration"), doc_->cameraError());
+    return false;
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------- autosave, start
+
+QString MainWindow::autosavePath() const {
+  const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave");
+  const QString key = doc_->filePath().isEmpty() || doc_->isTemplate() ? QStringLiteral("untitled") : doc_->filePath();
+  const QString hash = QString::fromLatin1(QCryptographicHash::hash(key.toUtf8(), QCryptographicHash::Sha1).toHex().left(12));
+  return dir + QLatin1Char('/') + hash + QStringLiteral(".demoplan");
+}
+
+void MainWindow::autosaveNow() {
+  if (!doc_->hasProject() || !doc_->isModified()) return;
+  const QString path = autosavePath();
+  QDir().mkpath(QFileInfo(path).absolutePath());
+  try {
+    doc_->saveCopy(path);
+    QFile origin(path + QStringLiteral(".origin"));
+    if (origin.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+      origin.write((doc_->isTemplate() ? QString() : doc_->filePath()).toUtf8());
+    }
+    statusBar()->showMessage(tr("Autosaved"), 2000);
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(tr("Autosave failed: %1").arg(QString::fromUtf8(e.what())), 10000);
+  }
+}
+
+void MainWindow::removeAutosave() {
+  if (!doc_->hasProject()) return;
+  const QString path = autosavePath();
+  QFile::remove(path);
+  QFile::remove(path + QStringLiteral(".origin"));
+  QFile::remove(QFileInfo(path).absolutePath() + QLatin1Char('/') + QFileInfo(path).completeBaseName() +
+                QStringLiteral(".path.json"));
+}
+
+bool MainWindow::offerRecovery() {
+  const QDir dir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave"));
+  const QFileInfoList files = dir.entryInfoList({QStringLiteral("*.demoplan")}, QDir::Files, QDir::Time);
+  if (files.isEmpty() || !options_.interactive) return false;
+  const QFileInfo latest = files.front();
+  QFile origin_file(latest.absoluteFilePath() + QStringLiteral(".origin"));
+  QString origin;
+  if (origin_file.open(QIODevice::ReadOnly)) origin = QString::fromUtf8(origin_file.readAll());
+  QMessageBox box(QMessageBox::Question, tr("Recover unsaved work?"),
+                  tr("demoplan did not close properly last time. Unsaved changes to %1 were autosaved %2.")
+                      .arg(origin.isEmpty() ? tr("an untitled project") : QFileInfo(origin).fileName(),
+                           latest.lastModified().toString(Qt::TextDate)),
+                  QMessageBox::NoButton, this);
+  QPushButton* recover = box.addButton(tr("Recover"), QMessageBox::AcceptRole);
+  box.addButton(tr("Discard"), QMessageBox::DestructiveRole);
+  box.exec();
+  if (box.clickedButton() != recover) {
+    for (const QFileInfo& f : files) {
+      QFile::remove(f.absoluteFilePath());
+      QFile::remove(f.absoluteFilePath() + QStringLiteral(".origin"));
+    }
+    return false;
+  }
+  try {
+    doc_->open(latest.absoluteFilePath());
+    if (!origin.isEmpty()) doc_->setFilePath(origin);
+    else doc_->setTemplate(true);
+    doc_->setModified();
+  } catch (const std::exception& e) {
+    reportError(tr("Cannot recover"), QString::fromUtf8(e.what()));
+    return false;
+  }
+  updateTitle();
+  statusBar()->showMessage(tr("Recovered the autosaved work: save it to keep it"), 10000);
+  return true;
+}
+
+void MainWindow::startUp(const QString& file) {
+  QSettings settings;
+  if (!file.isEmpty()) {
+    openProject(file);
+    settings.setValue(QStringLiteral("firstStartDone"), true);
+    return;
+  }
+  if (offerRecovery()) return;
+  if (!settings.value(QStringLiteral("firstStartDone"), false).toBool()) {
+    settings.setValue(QStringLiteral("firstStartDone"), true);
+    openSample();
+    return;
+  }
+  for (const QString& f : recentFiles())
+    if (QFileInfo::exists(f)) {
+      if (openProject(f)) return;
+      break;
+    }
+  openSample();
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+  if (!maybeSave()) {
+    e->ignore();
+    return;
+  }
+  if (doc_->planner()->isRunning()) doc_->planner()->cancel();
+  QSettings settings;
+  settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+  settings.setValue(QStringLiteral("window/state"), saveState());
+  removeAutosave();
+  e->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+  if (!e->mimeData()->hasUrls()) return;
+  for (const QUrl& u : e->mimeData()->urls()) {
+    const QString f = u.toLocalFile();
+    if (f.endsWith(QStringLiteral(".demoplan")) || isVideoFile(f)) {
+      e->acceptProposedAction();
+      return;
+    }
+  }
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+  for (const QUrl& u : e->mimeData()->urls()) {
+    const QString f = u.toLocalFile();
+    if (f.endsWith(QStringLiteral(".demoplan"))) {
+      if (maybeSave()) openProject(f);
+      e->acceptProposedAction();
+      return;
+    }
+    if (isVideoFile(f)) {
+      openVideo(f);
+      e->acceptProposedAction();
+      return;
+    }
+  }
+}
+
+// ------------------------------------------------------------------------------- misc
+
+void MainWindow::addEventAtPlayhead(EventType type) {
+  if (!doc_->hasProject()) return;
+  int object = doc_->selectedObject();
+  if (object < 0) {
+    statusBar()->showMessage(tr("Select a part first (click it in the 3D view or its lane in the timeline)"), 5000);
+    return;
+  }
+  doc_->selectEvent(doc_->addEvent(doc_->currentFrame(), object, type));
+}
+
+void MainWindow::showShortcuts() {
+  const QString rows[][2] = {{"Space", tr("play / pause (the video, or the path when it is shown)")},
+                             {"← / →", tr("one frame back / forward")},
+                             {"Shift+← / →", tr("one second back / forward")},
+                             {"J / K / L", tr("play backward / pause / play forward (again: faster)")},
+                             {"Home / End", tr("first / last frame")},
+                             {"G / R", tr("add a grasp / release of the selected part at the playhead")},
+                             {"Del", tr("delete the selected event")},
+                             {"Ctrl+Z / Ctrl+Shift+Z", tr("undo / redo")},
+                             {"Ctrl+J", tr("go to the event that breaks a rule")},
+                             {"F", tr("fit the 3D view")},
+                             {"T", tr("show / hide the planner's trees")},
+                             {"F5 / Esc", tr("plan / cancel planning")},
+                             {"Ctrl+S / Ctrl+Shift+S", tr("save / save as")},
+                             {tr("3D view"), tr("left-drag orbit · right/middle-drag pan · wheel zoom · click selects a part · "
+                                                "drag the gizmo's arrows or ring to move it (Ctrl: coarse steps)")},
+                             {tr("Timeline"), tr("click/drag the playhead · drag a marker to move the event · double-click "
+                                                 "a lane to add one · right-click for more")}};
+  QString html = QStringLiteral("<table cellspacing=4>");
+  for (const auto& r : rows) html += QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(r[0], r[1]);
+  html += QStringLiteral("</table>");
+  QMessageBox::information(this, tr("Keyboard shortcuts"), html);
+}
+
+void MainWindow::showAbout() {
+  QMessageBox::about(this, tr("About demoplan"),
+                     tr("<b>demoplan</b> %1<br>Teach a robot cell a pick-and-place task from one video: review the "
+                        "detected grasps and releases, correct the parts' poses, plan with the video-guided "
+                        "multi-contact RRT (Zorina et al., ICRA 2023) and export the program.<br><br>3D view: %2")
+                         .arg(QCoreApplication::applicationVersion(), scene_view_->glInfo()));
+}
+
+}  // namespace demoplan::ui

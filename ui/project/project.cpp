@@ -1,0 +1,194 @@
+#include "ui/project/project.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "core/error.h"
+
+namespace demoplan::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path folder_of(const std::string& file) { return fs::absolute(fs::path(file)).parent_path(); }
+
+// Relative to the project's folder when both are on the same root; absolute otherwise.
+std::string to_stored(const std::string& absolute, const std::string& file) {
+  if (absolute.empty()) return "";
+  const fs::path p = fs::path(absolute).lexically_normal();
+  const fs::path rel = p.lexically_relative(folder_of(file).lexically_normal());
+  if (rel.empty()) return p.string();
+  return rel.generic_string();
+}
+
+std::string from_stored(const std::string& stored, const std::string& file) {
+  if (stored.empty()) return "";
+  const fs::path p(stored);
+  if (p.is_absolute()) return p.lexically_normal().string();
+  return (folder_of(file) / p).lexically_normal().string();
+}
+
+Json result_to_json(const ResultSummary& r, const std::string& file) {
+  return Json{{"path", to_stored(r.path, file)},
+              {"solved", r.solved},
+              {"valid", r.valid},
+              {"message", r.message},
+              {"validated_against", r.validated_against},
+              {"planning_time_s", r.planning_time_s},
+              {"iterations", r.iterations},
+              {"trees", r.trees},
+              {"nodes", r.nodes},
+              {"length_robot_rad", r.length_robot_rad},
+              {"length_object_m", r.length_object_m},
+              {"length_object_rad", r.length_object_rad},
+              {"grasps", r.grasps},
+              {"shortened", r.shortened},
+              {"demonstration_digest", r.demonstration_digest}};
+}
+
+ResultSummary result_from_json(const JsonField& j, const std::string& file) {
+  ResultSummary r;
+  r.path = from_stored(j["path"].string(), file);
+  r.solved = j["solved"].boolean();
+  r.valid = j["valid"].boolean();
+  r.message = j["message"].string();
+  r.validated_against = j.has("validated_against") ? j["validated_against"].string() : "";
+  r.planning_time_s = j["planning_time_s"].number();
+  const double iterations = j["iterations"].number();
+  r.iterations = static_cast<long>(iterations);
+  r.trees = j["trees"].integer();
+  const double nodes = j["nodes"].number();
+  if (nodes < 0) j["nodes"].fail("must be >= 0");
+  r.nodes = static_cast<size_t>(nodes);
+  r.length_robot_rad = j["length_robot_rad"].number();
+  r.length_object_m = j["length_object_m"].number();
+  r.length_object_rad = j["length_object_rad"].number();
+  r.grasps = j["grasps"].integer();
+  r.shortened = j.has("shortened") && j["shortened"].boolean();
+  r.demonstration_digest = j.has("demonstration_digest") ? j["demonstration_digest"].string() : "";
+  return r;
+}
+
+Json planner_to_json(const PlannerSettings& s) {
+  const PlannerParams& p = s.planner;
+  return Json{{"seed", p.seed},
+              {"time_limit_s", p.time_limit},
+              {"max_iterations", p.max_iterations},
+              {"eta", p.eta_sample_tree},
+              {"step_rad", p.step},
+              {"resolution_rad", p.resolution},
+              {"shortcut", s.shortcut},
+              {"shortcut_time_s", s.shortcut_time_s}};
+}
+
+PlannerSettings planner_from_json(const JsonField& j) {
+  PlannerSettings s;
+  PlannerParams& p = s.planner;
+  if (j.has("seed")) {
+    if (!j["seed"].value().is_number_unsigned()) j["seed"].fail("must be a non-negative integer");
+    p.seed = j["seed"].value().get<std::uint64_t>();
+  }
+  auto positive = [&](const char* key, double& out) {
+    if (!j.has(key)) return;
+    out = j[key].number();
+    if (out <= 0) j[key].fail("must be > 0");
+  };
+  positive("time_limit_s", p.time_limit);
+  positive("step_rad", p.step);
+  positive("resolution_rad", p.resolution);
+  if (j.has("max_iterations")) {
+    const double v = j["max_iterations"].number();
+    if (v < 1) j["max_iterations"].fail("must be >= 1");
+    p.max_iterations = static_cast<long>(v);
+  }
+  if (j.has("eta")) {
+    p.eta_sample_tree = j["eta"].number();
+    if (p.eta_sample_tree < 0 || p.eta_sample_tree > 1) j["eta"].fail("must be within [0, 1]");
+  }
+  if (j.has("shortcut")) s.shortcut = j["shortcut"].boolean();
+  if (j.has("shortcut_time_s")) {
+    s.shortcut_time_s = j["shortcut_time_s"].number();
+    if (s.shortcut_time_s < 0) j["shortcut_time_s"].fail("must be >= 0");
+  }
+  return s;
+}
+
+}  // namespace
+
+SolveParams PlannerSettings::solve_params() const {
+  SolveParams sp;
+  sp.planner = planner;
+  sp.shortcut = shortcut && shortcut_time_s > 0;
+  sp.shortcutting.time_limit = shortcut_time_s;
+  sp.shortcutting.seed = planner.seed;
+  return sp;
+}
+
+Json project_to_json(const Project& p, const std::string& file) {
+  Json scene{{"task", p.scene.task}, {"robot", p.scene.robot}, {"pose", p.scene.pose}};
+  if (!p.scene.data_dir.empty()) scene["data_dir"] = to_stored(p.scene.data_dir, file);
+  Json j{{"format", kProjectFormat},
+         {"version", kProjectVersion},
+         {"units", "metres, radians, seconds; paths relative to this file"},
+         {"scene", scene},
+         {"video", to_stored(p.video, file)},
+         {"camera", to_stored(p.camera, file)},
+         {"demonstration", demonstration_to_json(p.demonstration)},
+         {"planner", planner_to_json(p.planner)},
+         {"result", p.result ? result_to_json(*p.result, file) : Json(nullptr)},
+         {"view", {{"frame", p.frame}}}};
+  return j;
+}
+
+Project project_from_json(const Json& json, const std::string& file) {
+  const JsonField root(json, file);
+  if (!json.is_object()) root.fail("not a demoplan project (expected a JSON object)");
+  if (!root.has("format") || !json["format"].is_string() || json["format"] != kProjectFormat)
+    root.fail(std::string("not a demoplan project: \"format\" must be \"") + kProjectFormat + "\"");
+  const int version = root["version"].integer();
+  if (version != kProjectVersion)
+    root["version"].fail("unsupported project version " + std::to_string(version) + " (this demoplan reads version " +
+                         std::to_string(kProjectVersion) + "; a newer demoplan may open it)");
+  Project p;
+  const JsonField scene = root["scene"];
+  p.scene.task = scene["task"].string();
+  p.scene.robot = scene["robot"].string();
+  p.scene.pose = scene["pose"].integer();
+  if (p.scene.pose < 0) scene["pose"].fail("must be >= 0");
+  if (scene.has("data_dir")) p.scene.data_dir = from_stored(scene["data_dir"].string(), file);
+  p.video = root.has("video") ? from_stored(root["video"].string(), file) : "";
+  p.camera = root.has("camera") ? from_stored(root["camera"].string(), file) : "";
+  const JsonField demo = root["demonstration"];
+  if (!demo.value().is_object()) demo.fail("must be a demoplan-demonstration object");
+  p.demonstration = demonstration_from_json(demo.value(), file + ": demonstration");
+  if (root.has("planner")) p.planner = planner_from_json(root["planner"]);
+  if (root.has("result") && !root["result"].is_null()) p.result = result_from_json(root["result"], file);
+  if (root.has("view") && root["view"].has("frame")) p.frame = std::max(0, root["view"]["frame"].integer());
+  return p;
+}
+
+void save_project(const std::string& file, const Project& project) {
+  write_json_file_atomic(file, project_to_json(project, file), 1);
+}
+
+Project load_project(const std::string& file) {
+  std::error_code ec;
+  if (!fs::exists(file, ec)) throw InputError(file, "", "no such file");
+  if (fs::is_directory(file, ec)) throw InputError(file, "", "is a folder, not a project file");
+  return project_from_json(read_json_file(file), file);
+}
+
+std::string demonstration_digest(const Demonstration& demo) {
+  const std::string text = demonstration_to_json(demo).dump();
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+}  // namespace demoplan::ui

@@ -1,0 +1,86 @@
+#pragma once
+// The project file: everything the operator works on, in one versioned JSON file.
+//
+// {"format": "demoplan-project", "version": 1,
+//  "scene": {"task": "shelf_1", "robot": "panda", "pose": 1,
+//            "data_dir": "..."},               // optional; absent: the bundled benchmark data
+//  "video": "video.mp4",                       // relative to the project file; "" when none
+//  "camera": "camera.json",                    // demoplan-camera or OpenCV calibration; "" none
+//  "demonstration": {"format": "demoplan-demonstration", "version": 1, ...},  // with the edits
+//  "planner": {"seed": 1, "time_limit_s": 60, "max_iterations": 10000000, "eta": 0.1,
+//              "step_rad": 0.3, "resolution_rad": 0.01, "shortcut": true, "shortcut_time_s": 1},
+//  "result": {"path": "x.path.json", ...summary of the last run} | null,
+//  "view": {"frame": 0}}
+// Paths are stored relative to the project file's folder (absolute paths are kept as they are)
+// and held absolute in memory. Units: metres, radians, seconds.
+#include <optional>
+#include <string>
+
+#include "core/demo/demonstration.h"
+#include "core/io/json_file.h"
+#include "core/planning/solve.h"
+
+namespace demoplan::ui {
+
+inline constexpr const char* kProjectFormat = "demoplan-project";
+inline constexpr int kProjectVersion = 1;
+inline constexpr const char* kProjectExtension = "demoplan";
+
+struct SceneReference {
+  std::string data_dir;  // absolute; empty: the bundled benchmark data
+  std::string task = "shelf_1";
+  std::string robot = "panda";
+  int pose = 0;
+  bool operator==(const SceneReference&) const = default;
+};
+
+struct PlannerSettings {
+  PlannerParams planner;
+  bool shortcut = true;
+  double shortcut_time_s = 1.0;
+  SolveParams solve_params() const;
+};
+
+// What the last planning run produced, as the result panel shows it. The path itself lives in
+// its own "demoplan-path" file beside the project.
+struct ResultSummary {
+  std::string path;  // absolute path of the path file
+  bool solved = false;
+  bool valid = false;
+  std::string message;     // the validator's message, or why planning failed
+  std::string validated_against;
+  double planning_time_s = 0.0;
+  long iterations = 0;
+  int trees = 0;
+  size_t nodes = 0;
+  double length_robot_rad = 0.0;
+  double length_object_m = 0.0;
+  double length_object_rad = 0.0;
+  int grasps = 0;
+  bool shortened = false;
+  std::string demonstration_digest;  // of the demonstration it was planned for
+};
+
+struct Project {
+  SceneReference scene;
+  std::string video;   // absolute; empty when none
+  std::string camera;  // absolute; empty when none
+  Demonstration demonstration;
+  PlannerSettings planner;
+  std::optional<ResultSummary> result;
+  int frame = 0;  // where the playhead was
+};
+
+// Reads and writes the project file. Saving is atomic. Loading throws InputError naming the
+// file and the field; a file of another format or version is rejected with a clear message.
+void save_project(const std::string& file, const Project& project);
+Project load_project(const std::string& file);
+
+Json project_to_json(const Project& project, const std::string& file);
+Project project_from_json(const Json& json, const std::string& file);
+
+// A short stable digest of a demonstration (FNV-1a of its JSON), to tell whether a result is
+// out of date.
+std::string demonstration_digest(const Demonstration& demo);
+
+}  // namespace demoplan::ui

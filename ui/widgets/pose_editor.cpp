@@ -1,0 +1,197 @@
+#include "ui/widgets/pose_editor.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "ui/document/demo_poses.h"
+#include "ui/widgets/style.h"
+
+namespace demoplan::ui {
+
+namespace {
+constexpr double kDeg = 180.0 / M_PI;
+}
+
+PoseEditor::PoseEditor(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(6, 6, 6, 6);
+  event_label_ = new QLabel(this);
+  event_label_->setWordWrap(true);
+  layout->addWidget(event_label_);
+
+  auto* form = new QFormLayout;
+  form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+  frame_ = new QSpinBox(this);
+  frame_->setKeyboardTracking(false);
+  frame_->setToolTip(tr("Video frame of the selected event; change it to move the event"));
+  confidence_ = new QDoubleSpinBox(this);
+  confidence_->setRange(0, 100);
+  confidence_->setSuffix(QStringLiteral(" %"));
+  confidence_->setDecimals(0);
+  confidence_->setKeyboardTracking(false);
+  confidence_->setToolTip(tr("How sure the detector was; set it to 100% once you have checked the event"));
+  auto* event_row = new QHBoxLayout;
+  event_row->addWidget(frame_, 1);
+  event_row->addWidget(new QLabel(tr("Confidence"), this));
+  event_row->addWidget(confidence_, 1);
+  form->addRow(tr("Frame"), event_row);
+  object_ = new QComboBox(this);
+  object_->setToolTip(tr("The part whose pose you edit (or click it in the 3D view)"));
+  form->addRow(tr("Part"), object_);
+  layout->addLayout(form);
+
+  auto* box = new QGroupBox(tr("Pose in the world"), this);
+  auto* grid = new QGridLayout(box);
+  const char* names[6] = {"X", "Y", "Z", QT_TR_NOOP("Roll"), QT_TR_NOOP("Pitch"), QT_TR_NOOP("Yaw")};
+  const char* tips[6] = {QT_TR_NOOP("Position along the world x axis, millimetres"),
+                         QT_TR_NOOP("Position along the world y axis, millimetres"),
+                         QT_TR_NOOP("Height above the floor, millimetres"),
+                         QT_TR_NOOP("Rotation about x, degrees (applied first)"),
+                         QT_TR_NOOP("Rotation about y, degrees"),
+                         QT_TR_NOOP("Rotation about z, degrees (applied last)")};
+  for (int i = 0; i < 6; ++i) {
+    auto* s = new QDoubleSpinBox(box);
+    s->setKeyboardTracking(false);
+    s->setAccelerated(true);
+    if (i < 3) {
+      s->setRange(-20000, 20000);
+      s->setDecimals(1);
+      s->setSingleStep(1.0);
+      s->setSuffix(QStringLiteral(" mm"));
+    } else {
+      s->setRange(-360, 360);
+      s->setDecimals(2);
+      s->setSingleStep(1.0);
+      s->setSuffix(QStringLiteral("°"));
+      s->setWrapping(true);
+    }
+    s->setToolTip(tr(tips[i]));
+    s->setAccessibleName(tr(names[i]));
+    fields_[i] = s;
+    grid->addWidget(new QLabel(tr(names[i]), box), i % 3, (i / 3) * 2);
+    grid->addWidget(s, i % 3, (i / 3) * 2 + 1);
+    connect(s, &QDoubleSpinBox::valueChanged, this, [this, i] { onFieldEdited(i); });
+  }
+  grid->setColumnStretch(1, 1);
+  grid->setColumnStretch(3, 1);
+  layout->addWidget(box);
+  note_ = new QLabel(this);
+  note_->setWordWrap(true);
+  QFont f = note_->font();
+  f.setPointSizeF(f.pointSizeF() * 0.9);
+  note_->setFont(f);
+  layout->addWidget(note_);
+  layout->addStretch(1);
+
+  connect(object_, &QComboBox::currentIndexChanged, this, [this](int i) {
+    if (!refreshing_) doc_->selectObject(i);
+  });
+  connect(frame_, &QSpinBox::valueChanged, this, [this](int f) {
+    if (refreshing_) return;
+    const int ev = doc_->editEvent();
+    if (ev >= 0) {
+      doc_->moveEvent(ev, f);
+      doc_->setCurrentFrame(f);
+    }
+  });
+  connect(confidence_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    if (!refreshing_) doc_->setEventConfidence(doc_->editEvent(), v / 100.0);
+  });
+  connect(doc_, &Document::projectLoaded, this, &PoseEditor::refresh);
+  connect(doc_, &Document::demonstrationChanged, this, &PoseEditor::refresh);
+  connect(doc_, &Document::selectionChanged, this, &PoseEditor::refresh);
+  connect(doc_, &Document::currentFrameChanged, this, &PoseEditor::refresh);
+  refresh();
+}
+
+void PoseEditor::refresh() {
+  refreshing_ = true;
+  const bool has = doc_->hasProject();
+  const int ev = has ? doc_->editEvent() : -1;
+  int obj = has ? doc_->selectedObject() : -1;
+  if (has && obj < 0 && ev >= 0) obj = doc_->demonstration().events[ev].object;
+  {
+    QSignalBlocker b(object_);
+    object_->clear();
+    if (has)
+      for (const auto& id : doc_->demonstration().object_ids) object_->addItem(QString::fromStdString(id));
+    object_->setCurrentIndex(obj);
+  }
+  const bool editable = ev >= 0 && obj >= 0;
+  for (auto* f : fields_) f->setEnabled(editable);
+  frame_->setEnabled(ev >= 0);
+  confidence_->setEnabled(ev >= 0);
+  if (ev < 0) {
+    event_label_->setText(has ? tr("No event: add one on the timeline (double-click a lane)") : tr("No project"));
+    note_->clear();
+    shown_event_ = shown_object_ = -1;
+    refreshing_ = false;
+    return;
+  }
+  const Demonstration& d = doc_->demonstration();
+  const ContactEvent& e = d.events[ev];
+  {
+    QSignalBlocker b1(frame_), b2(confidence_);
+    frame_->setRange(0, std::max(0, doc_->frameCount() - 1));
+    frame_->setValue(e.frame);
+    confidence_->setValue(e.confidence * 100.0);
+  }
+  event_label_->setText(tr("<b>%1 of %2</b> at %3%4")
+                            .arg(eventTypeName(e.type), QString::fromStdString(d.object_ids[e.object]),
+                                 frameText(e.frame, doc_->fps()),
+                                 doc_->selectedEvent() < 0 ? tr(" <i>(last event before the playhead)</i>") : QString()));
+  if (obj >= 0) {
+    const Pose T = world_pose_at_event(doc_->scene(), d, ev, obj, doc_->initialConfiguration());
+    const Eigen::Vector3d rpy = rpyFromRotation(T.linear());
+    std::array<double, 6> v = {T.translation().x() * 1000, T.translation().y() * 1000, T.translation().z() * 1000,
+                               rpy.x() * kDeg, rpy.y() * kDeg, rpy.z() * kDeg};
+    // Keep the exact values while the pose is the one the fields show (rounding drift).
+    for (int i = 0; i < 6; ++i) {
+      const bool same = ev == shown_event_ && obj == shown_object_ &&
+                        std::abs(v[i] - exact_[i]) < (i < 3 ? 0.05 : 0.005);
+      if (!same) exact_[i] = v[i];
+      QSignalBlocker b(fields_[i]);
+      fields_[i]->setValue(exact_[i]);
+      shown_[i] = fields_[i]->value();
+    }
+    shown_event_ = ev;
+    shown_object_ = obj;
+    const std::vector<size_t> rest = rest_events(d, ev, obj);
+    QString note;
+    if (held_at_frame(d, obj, e.frame) && !(e.object == obj))
+      note = tr("%1 is held at this event.").arg(QString::fromStdString(d.object_ids[obj]));
+    else if (rest.size() > 1)
+      note = tr("Applies to the rest of %1 from frame %2 to %3 (%4 events): a part does not move while nobody holds it.")
+                 .arg(QString::fromStdString(d.object_ids[obj]))
+                 .arg(d.events[rest.front()].frame)
+                 .arg(d.events[rest.back()].frame)
+                 .arg(rest.size());
+    if (!e.pose_frame(obj).empty())
+      note += tr(" Stored relative to the robot link %1 (it rides on the robot).").arg(QString::fromStdString(e.pose_frame(obj)));
+    note_->setText(note);
+  }
+  refreshing_ = false;
+}
+
+void PoseEditor::onFieldEdited(int i) {
+  if (refreshing_) return;
+  const int ev = doc_->editEvent();
+  const int obj = shown_object_;
+  if (ev < 0 || obj < 0) return;
+  // The change the operator made to the displayed (rounded) value, applied to the exact one.
+  exact_[i] += fields_[i]->value() - shown_[i];
+  shown_[i] = fields_[i]->value();
+  Pose T = pose_from_xyz_rpy(Eigen::Vector3d(exact_[0], exact_[1], exact_[2]) / 1000.0,
+                             Eigen::Vector3d(exact_[3], exact_[4], exact_[5]) / kDeg);
+  doc_->setObjectPose(ev, obj, T, /*merge_key=*/i);
+}
+
+}  // namespace demoplan::ui

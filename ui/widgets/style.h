@@ -1,0 +1,30 @@
+#pragma once
+// Colours and small formatting helpers every panel shares, so a part has the same colour in
+// the timeline, the 3D view and the video overlay.
+#include <QColor>
+#include <QString>
+
+#include "core/demo/demonstration.h"
+#include "core/geometry/se3.h"
+
+namespace demoplan::ui {
+
+QColor objectColor(int object);  // distinct per object index
+QColor eventColor(EventType type);  // grasp: green, release: orange
+QColor treeColor(int tree);
+inline const QColor kOkColor{0x2e, 0x9d, 0x4a};
+inline const QColor kWarningColor{0xd9, 0x8e, 0x04};
+inline const QColor kErrorColor{0xcf, 0x22, 0x2e};
+inline const QColor kBusyColor{0x1f, 0x6f, 0xeb};
+inline const QColor kSelectionColor{0xff, 0xc4, 0x00};
+inline constexpr double kLowConfidence = 0.5;
+
+// "grasp" / "release"
+QString eventTypeName(EventType type);
+// "frame 48 (1.60 s)"
+QString frameText(int frame, double fps);
+
+// URDF roll-pitch-yaw (R = Rz(yaw) Ry(pitch) Rx(roll)) of a rotation, radians.
+Eigen::Vector3d rpyFromRotation(const Eigen::Matrix3d& R);
+
+}  // namespace demoplan::ui

@@ -1,0 +1,74 @@
+#pragma once
+// The event timeline: one lane per part with its grasp (green, pointing up) and release (orange,
+// pointing down) markers, the carrying interval between them, each event's confidence, the
+// playhead, and the rule each broken event violates. Click selects, drag moves an event to
+// another frame, double-click adds one, the context menu adds or deletes; every edit goes
+// through the document's undo stack.
+#include <QWidget>
+
+#include "ui/document/document.h"
+
+class QLabel;
+class QPainter;
+
+namespace demoplan::ui {
+
+class TimelineWidget : public QWidget {
+  Q_OBJECT
+public:
+  explicit TimelineWidget(Document* doc, QWidget* parent = nullptr);
+
+  // Geometry, public for tests and for the panel around it.
+  double frameToX(double frame) const;
+  int xToFrame(double x) const;
+  int laneTop(int object) const;
+  QRectF markerRect(int event) const;
+  int eventAt(const QPointF& p) const;  // -1 when none
+  int laneAt(double y) const;           // -1 when none
+  QSize sizeHint() const override;
+  QSize minimumSizeHint() const override;
+
+  static constexpr int kGutter = 112;
+  static constexpr int kRuler = 22;
+  static constexpr int kLane = 30;
+
+protected:
+  void paintEvent(QPaintEvent*) override;
+  void mousePressEvent(QMouseEvent*) override;
+  void mouseMoveEvent(QMouseEvent*) override;
+  void mouseReleaseEvent(QMouseEvent*) override;
+  void mouseDoubleClickEvent(QMouseEvent*) override;
+  void contextMenuEvent(QContextMenuEvent*) override;
+  bool event(QEvent*) override;
+
+private:
+  void paintMarker(QPainter& p, int event, double x, bool ghost) const;
+  double right() const;
+
+  Document* doc_;
+  enum class Drag { None, Playhead, Event } drag_ = Drag::None;
+  int drag_event_ = -1;
+  int drag_frame_ = 0;
+  QPointF press_pos_;
+  bool drag_moved_ = false;
+};
+
+// The timeline with the demonstration's validity under it: the rule that breaks and where,
+// as links that jump to the offending event.
+class TimelinePanel : public QWidget {
+  Q_OBJECT
+public:
+  explicit TimelinePanel(Document* doc, QWidget* parent = nullptr);
+  TimelineWidget* timeline() const { return timeline_; }
+  QLabel* validityLabel() const { return validity_; }
+  // Jumps to the issue at `index` of Document::issues() (what clicking its link does).
+  void jumpToIssue(int index);
+
+private:
+  void refresh();
+  Document* doc_;
+  TimelineWidget* timeline_;
+  QLabel* validity_;
+};
+
+}  // namespace demoplan::ui
