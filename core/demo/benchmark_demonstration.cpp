@@ -11,14 +11,6 @@ namespace demoplan {
 
 namespace {
 
-// Rows of task.contacts/raw_poses that are planning objects, in planning order.
-std::vector<size_t> planning_rows(const BenchmarkTask& task) {
-  std::vector<size_t> rows;
-  for (size_t i = 0; i < task.objects.size(); ++i)
-    if (task.objects[i].in_planning_model) rows.push_back(i);
-  return rows;
-}
-
 Demonstration events_only(const BenchmarkTask& task) {
   Demonstration d;
   d.task = task.name();
@@ -132,7 +124,7 @@ private:
 
 std::vector<ContactSegment> contact_segments(const BenchmarkTask& task) {
   std::vector<ContactSegment> out;
-  const auto rows = planning_rows(task);
+  const auto rows = task.planning_rows();
   for (size_t o = 0; o < rows.size(); ++o) {
     const auto& c = task.contacts[rows[o]];
     for (int t = 0; t < static_cast<int>(c.size()); ++t) {
@@ -169,7 +161,7 @@ Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scen
     e.pose_frames.assign(n, "");
   }
   const SupportAssigner assign(task, scene);
-  const auto rows = planning_rows(task);
+  const auto rows = task.planning_rows();
   for (size_t o = 0; o < n; ++o) {
     for (const RestInterval& r : rest_intervals(d, static_cast<int>(o), task.frames)) {
       // Frames well inside the rest: the hand may still touch the object at its ends.

@@ -43,20 +43,6 @@ bool add_support_box(const JsonField& entry, const std::string& name, Scene& sce
   return true;
 }
 
-// Rows of task.objects that are planning objects: planning_object_ids is object_ids without trays.
-std::vector<size_t> planning_rows(const BenchmarkTask& task) {
-  std::vector<size_t> rows;
-  for (size_t i = 0; i < task.objects.size(); ++i)
-    if (task.objects[i].in_planning_model) rows.push_back(i);
-  if (rows.size() != task.planning_object_ids.size())
-    throw InputError(task.file, "planning_object_ids", "must list the objects with in_planning_model");
-  for (size_t i = 0; i < rows.size(); ++i)
-    if (task.objects[rows[i]].id != task.planning_object_ids[i])
-      throw InputError(task.file, "planning_object_ids[" + std::to_string(i) + "]",
-                       "must equal object_ids without trays, in order");
-  return rows;
-}
-
 }  // namespace
 
 BenchmarkRobot load_benchmark_robot(const std::string& data_dir, const std::string& name) {
@@ -156,7 +142,7 @@ Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_
   }
 
   // Planning objects (trays are not part of the collision model), in planning_object_ids order.
-  for (size_t row : planning_rows(task)) {
+  for (size_t row : task.planning_rows()) {
     const auto& o = task.objects[row];
     SceneObject so;
     so.id = o.id;
@@ -173,7 +159,7 @@ namespace {
 SceneState state_at(const BenchmarkTask& task, const Scene& scene, bool goal) {
   SceneState s;
   s.q = scene.robot.initial_configuration;
-  const std::vector<size_t> rows = planning_rows(task);
+  const std::vector<size_t> rows = task.planning_rows();
   for (size_t i = 0; i < rows.size(); ++i) {
     const PoseList& track = task.subgoal_poses.empty() ? task.raw_poses[rows[i]] : task.subgoal_poses[i];
     s.objects.push_back(goal ? track.back() : track.front());

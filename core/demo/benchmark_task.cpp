@@ -69,6 +69,13 @@ BenchmarkTask load_benchmark_task(const std::string& data_dir, const std::string
     task.planning_object_ids.push_back(id);
   }
 
+  const std::vector<size_t> rows = task.planning_rows();
+  if (rows.size() != task.planning_object_ids.size())
+    planning.fail("must list the objects with in_planning_model, in order");
+  for (size_t i = 0; i < rows.size(); ++i)
+    if (task.objects[rows[i]].id != task.planning_object_ids[i])
+      planning[i].fail("must equal object_ids without trays, in order");
+
   task.raw_poses = pose_grid(root["objects_poses"], n, task.frames);
   const JsonField subgoals = root["subgoal_objects_poses"];
   if (!subgoals.is_null()) {
@@ -96,6 +103,13 @@ BenchmarkTask load_benchmark_task(const std::string& data_dir, const std::string
   for (const auto& [robot, _] : robot_poses.value().items())
     task.robot_pose_files[robot] = data_path(data_dir, robot_poses[robot]);
   return task;
+}
+
+std::vector<size_t> BenchmarkTask::planning_rows() const {
+  std::vector<size_t> rows;
+  for (size_t i = 0; i < objects.size(); ++i)
+    if (objects[i].in_planning_model) rows.push_back(i);
+  return rows;
 }
 
 std::vector<std::string> list_benchmark_tasks(const std::string& data_dir) {

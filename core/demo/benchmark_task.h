@@ -37,6 +37,9 @@ struct BenchmarkTask {
   std::map<std::string, std::string> robot_pose_files;  // robot name -> absolute path
 
   std::string name() const { return task_name + "_" + std::to_string(demo_id); }
+  // Rows of `objects` (and of raw_poses, contacts) that are planning objects, in the order of
+  // planning_object_ids (object_ids without trays). Checked when the task is loaded.
+  std::vector<size_t> planning_rows() const;
 };
 
 // Loads "<data_dir>/tasks/<name>.json" (name like "shelf_1"). Throws InputError.
