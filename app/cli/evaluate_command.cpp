@@ -2,17 +2,14 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <map>
 #include <optional>
-#include <variant>
 
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
-#include "core/demo/benchmark_task.h"
 #include "core/demo/demonstration.h"
-#include "core/model/robot_model.h"
 #include "perception/events/evaluation.h"
+#include "perception/events/model_points.h"
 #include "perception/extraction/tracks_file.h"
 
 namespace demoplan::cli {
@@ -25,28 +22,10 @@ struct EvaluateOptions {
   bool json = false;
 };
 
-// Model points of the truth's parts, when its task is a benchmark task of the data folder.
-std::map<std::string, std::vector<Eigen::Vector3d>> load_models(const std::string& data_dir, const std::string& task_name) {
-  std::map<std::string, std::vector<Eigen::Vector3d>> models;
-  if (!std::filesystem::exists(std::filesystem::path(data_dir) / "tasks" / (task_name + ".json"))) return models;
-  const BenchmarkTask task = load_benchmark_task(data_dir, task_name);
-  for (const auto& obj : task.objects) {
-    const RobotModel model = load_urdf(obj.urdf);
-    auto& points = models[obj.id];
-    for (const auto& g : model.links.front().collisions)
-      if (const auto* m = std::get_if<MeshShape>(&g.shape); m && m->mesh) {
-        const size_t step = std::max<size_t>(1, m->mesh->vertices.size() / 3000);
-        for (size_t i = 0; i < m->mesh->vertices.size(); i += step)
-          points.push_back(g.origin * m->mesh->vertices[i].cast<double>().cwiseProduct(m->scale));
-      }
-  }
-  return models;
-}
-
 int run_evaluate(const EvaluateOptions& o) {
   const Demonstration detected = load_demonstration(o.demo);
   const Demonstration truth = load_demonstration(o.truth);
-  const auto models = load_models(o.data_dir, truth.task);
+  const auto models = perception::benchmark_model_points(o.data_dir, truth.task);
   const perception::DemonstrationEvaluation e = perception::evaluate_demonstration(detected, truth, o.tolerance, models);
   std::optional<double> fps;
   if (const std::string tracks = perception::tracks_path_for(o.demo); std::filesystem::exists(tracks))

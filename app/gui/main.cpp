@@ -2,7 +2,7 @@
 //
 //   demoplan [PROJECT_FILE]            open a project (else: recovery, the last project, the sample)
 //   demoplan --screenshot out.png ...  render the window, save it, quit (headless checks)
-//   demoplan --new shelf_1:panda:1 [--video V] [--camera C] --save-as P.demoplan
+//   demoplan --new shelf_1:panda:1 [--video V] [--camera C] [--markers M] --save-as P.demoplan
 //                                      create a project from a benchmark task without a window
 #include <QApplication>
 #include <QCommandLineParser>
@@ -17,8 +17,8 @@
 
 namespace {
 
-int createProject(const QString& spec, const QString& video, const QString& camera, const QString& out,
-                  const std::string& data_dir) {
+int createProject(const QString& spec, const QString& video, const QString& camera, const QString& markers,
+                  const QString& out, const std::string& data_dir) {
   const QStringList parts = spec.split(QLatin1Char(':'));
   bool ok = parts.size() == 3;
   const int pose = ok ? parts[2].toInt(&ok) : 0;
@@ -31,6 +31,7 @@ int createProject(const QString& spec, const QString& video, const QString& came
     doc.newFromBenchmark(parts[0].toStdString(), parts[1].toStdString(), pose);
     if (!video.isEmpty()) doc.setVideo(video);
     if (!camera.isEmpty()) doc.setCamera(camera);
+    if (!markers.isEmpty()) doc.setMarkers(markers);
     if (!doc.videoError().isEmpty()) throw std::runtime_error(doc.videoError().toStdString());
     if (!doc.cameraError().isEmpty()) throw std::runtime_error(doc.cameraError().toStdString());
     doc.saveAs(out);
@@ -76,8 +77,9 @@ int main(int argc, char** argv) {
   QCommandLineOption create({QStringLiteral("new")}, QStringLiteral("create a project from a benchmark task (with --save-as)"), QStringLiteral("TASK:ROBOT:POSE"));
   QCommandLineOption video({QStringLiteral("video")}, QStringLiteral("video of the new project"), QStringLiteral("FILE"));
   QCommandLineOption camera({QStringLiteral("camera")}, QStringLiteral("camera calibration of the new project"), QStringLiteral("FILE"));
+  QCommandLineOption markers({QStringLiteral("markers")}, QStringLiteral("marker scene of the new project"), QStringLiteral("FILE"));
   QCommandLineOption save_as({QStringLiteral("save-as")}, QStringLiteral("write the new project to FILE and quit"), QStringLiteral("FILE"));
-  parser.addOptions({data_dir, screenshot, delay, sample, fresh, create, video, camera, save_as});
+  parser.addOptions({data_dir, screenshot, delay, sample, fresh, create, video, camera, markers, save_as});
   parser.process(app);
 
   const std::string data = parser.isSet(data_dir) ? QDir(parser.value(data_dir)).absolutePath().toStdString()
@@ -87,7 +89,8 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "demoplan: --new and --save-as go together\n");
       return 2;
     }
-    return createProject(parser.value(create), parser.value(video), parser.value(camera), parser.value(save_as), data);
+    return createProject(parser.value(create), parser.value(video), parser.value(camera), parser.value(markers),
+                         parser.value(save_as), data);
   }
 
   demoplan::ui::MainWindowOptions options;

@@ -62,11 +62,25 @@ std::vector<MotionInterval> ContactAnalysis::motions_of(int object) const {
   return out;
 }
 
+std::vector<bool> usable_samples(const std::vector<PoseSample>& samples, const ContactDetectorOptions& o) {
+  std::vector<double> rms;
+  for (const auto& s : samples)
+    if (s.valid && s.markers > 0) rms.push_back(s.reprojection_px);
+  const double max_rms = std::max(0.6, o.outlier_reprojection * median(rms));
+  std::vector<bool> out(samples.size(), false);
+  for (size_t f = 0; f < samples.size(); ++f) {
+    const PoseSample& s = samples[f];
+    out[f] = s.valid && s.confidence >= o.min_confidence && (s.markers == 0 || s.reprojection_px <= max_rms);
+  }
+  return out;
+}
+
 std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& samples, int object,
                                            const ContactDetectorOptions& o, double* jitter_t, double* jitter_r) {
+  const std::vector<bool> usable = usable_samples(samples, o);
   std::vector<int> frames;
   for (int f = 0; f < static_cast<int>(samples.size()); ++f)
-    if (samples[f].valid && samples[f].confidence >= o.min_confidence) frames.push_back(f);
+    if (usable[f]) frames.push_back(f);
   std::vector<MotionInterval> out;
   if (frames.size() < 2) return out;
   auto at = [&](int i) -> const PoseSample& { return samples[frames[i]]; };
@@ -83,7 +97,24 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     d2r.push_back((log3(b.linear().transpose() * c.linear()) - log3(a.linear().transpose() * b.linear())).norm());
   }
   constexpr double kSecondDifference = 1.54 * 2.449;
-  const double sigma_t = median(d2t) / kSecondDifference, sigma_r = median(d2r) / kSecondDifference;
+  // Estimators also drift slowly while a part rests (correlated errors the second difference
+  // does not see): the frame-to-frame change of the calmer third of the frames (the parts
+  // rest most of the time), for Gaussian steps of sigma * sqrt(2) per axis.
+  std::vector<double> d1t, d1r;
+  for (size_t i = 1; i < frames.size(); ++i)
+    if (frames[i] - frames[i - 1] == 1) {
+      d1t.push_back((at(i).pose.translation() - at(i - 1).pose.translation()).norm());
+      d1r.push_back(angle_between(at(i).pose, at(i - 1).pose));
+    }
+  auto quantile = [](std::vector<double> v, double q) {
+    if (v.empty()) return 0.0;
+    const size_t k = static_cast<size_t>(q * (v.size() - 1));
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
+    return v[k];
+  };
+  constexpr double kFirstDifference = 1.1 * 1.414;  // the 33rd percentile of a chi(3) is about 1.1
+  const double sigma_t = std::max(median(d2t) / kSecondDifference, quantile(d1t, 0.33) / kFirstDifference);
+  const double sigma_r = std::max(median(d2r) / kSecondDifference, quantile(d1r, 0.33) / kFirstDifference);
   if (jitter_t) *jitter_t = sigma_t;
   if (jitter_r) *jitter_r = sigma_r;
   Thresholds th;
@@ -91,15 +122,43 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
   th.rest_r = std::max(o.rest_rotation, o.noise_factor * sigma_r);
   th.move_t = std::max(o.move_translation, 2.5 * th.rest_t);
   th.move_r = std::max(o.move_rotation, 2.5 * th.rest_r);
-  auto still = [&](const Pose& p, const Pose& ref) {
-    return (p.translation() - ref.translation()).norm() <= th.rest_t && angle_between(p, ref) <= th.rest_r;
+  // A sample's own expected precision widens both thresholds (small or far markers).
+  auto still = [&](const PoseSample& p, const Pose& ref, double scale = 1.0) {
+    return (p.pose.translation() - ref.translation()).norm() <=
+               scale * std::max(th.rest_t, o.sigma_factor * p.sigma_translation) &&
+           angle_between(p.pose, ref) <= scale * std::max(th.rest_r, o.sigma_factor * p.sigma_rotation);
   };
-  auto beyond = [&](const Pose& p, const Pose& ref) {
-    return (p.translation() - ref.translation()).norm() > th.move_t || angle_between(p, ref) > th.move_r;
+  auto beyond = [&](const PoseSample& p, const Pose& ref) {
+    return (p.pose.translation() - ref.translation()).norm() > std::max(th.move_t, 2.5 * o.sigma_factor * p.sigma_translation) ||
+           angle_between(p.pose, ref) > std::max(th.move_r, 2.5 * o.sigma_factor * p.sigma_rotation);
   };
 
   const int n = static_cast<int>(frames.size());
   std::vector<int> rest{0}, moving;
+  // Whether moving[a..b) still drifts: its least-squares velocity is above rest_velocity and
+  // above what the noise explains (3 standard deviations of the fitted slope). A slow last
+  // approach stays within the rest thresholds of noisy tracks but keeps its direction.
+  auto drifting = [&](int a, int b) {
+    double fm = 0;
+    Eigen::Vector3d pm = Eigen::Vector3d::Zero();
+    double sigma = sigma_t;
+    for (int k = a; k < b; ++k) {
+      fm += frames[moving[k]];
+      pm += at(moving[k]).pose.translation();
+      sigma = std::max(sigma, at(moving[k]).sigma_translation);
+    }
+    fm /= (b - a);
+    pm /= (b - a);
+    double den = 0;
+    Eigen::Vector3d num = Eigen::Vector3d::Zero();
+    for (int k = a; k < b; ++k) {
+      const double df = frames[moving[k]] - fm;
+      num += df * (at(moving[k]).pose.translation() - pm);
+      den += df * df;
+    }
+    if (den <= 0) return false;
+    return (num / den).norm() > std::max(o.rest_velocity, 3.0 * sigma / std::sqrt(den));
+  };
   Pose ref = at(0).pose, start_ref = ref;
   bool in_motion = false;
   int run = 0;
@@ -111,7 +170,7 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     return centre_of(tail);
   };
   for (int i = 1; i < n; ++i) {
-    const Pose& p = at(i).pose;
+    const PoseSample& p = at(i);
     if (!in_motion) {
       if (still(p, ref)) {
         rest.push_back(i);
@@ -131,8 +190,10 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
           for (int k = m - o.min_rest_frames; k < m; ++k) window.push_back(&at(moving[k]));
           const Pose centre = centre_of(window);
           bool settled = true;
-          for (const auto* w : window) settled = settled && still(w->pose, centre);
-          if (settled && !beyond(centre, ref)) {
+          for (const auto* w : window) settled = settled && still(*w, centre);
+          PoseSample c;
+          c.pose = centre;
+          if (settled && !beyond(c, ref)) {
             rest.assign(moving.end() - o.min_rest_frames, moving.end());
             ref = rest_centre();
             moving.clear();
@@ -153,32 +214,36 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
       continue;
     }
     moving.push_back(i);
-    cur.distance = std::max(cur.distance, (p.translation() - start_ref.translation()).norm());
+    cur.distance = std::max(cur.distance, (p.pose.translation() - start_ref.translation()).norm());
     const int m = static_cast<int>(moving.size());
     if (m < o.min_rest_frames) continue;
     std::vector<const PoseSample*> window;
     for (int k = m - o.min_rest_frames; k < m; ++k) window.push_back(&at(moving[k]));
     const Pose centre = centre_of(window);
-    bool settled = true;
-    for (const auto* s : window) settled = settled && still(s->pose, centre);
+    bool settled = !drifting(m - o.min_rest_frames, m);
+    for (const auto* w : window) settled = settled && still(*w, centre);
     if (!settled) continue;
-    // At rest again: it came to rest at the earliest sample that is still at the new pose.
+    // At rest again: it came to rest at the earliest sample that is still at the new pose
+    // (closer than for staying at rest: the last slow approach is not rest yet).
     int j = m - o.min_rest_frames;
-    while (j > 0 && still(at(moving[j - 1]).pose, centre)) --j;
+    while (j > 0 && still(at(moving[j - 1]), centre, 0.6)) --j;
     cur.end = frames[moving[j]];
     const int gap = j > 0 ? frames[moving[j]] - frames[moving[j - 1]] : 1;
     cur.end_confidence = at(moving[j]).confidence * std::exp(-(gap - 1) / 10.0);
     const bool displaced = (centre.translation() - start_ref.translation()).norm() > th.move_t ||
                            angle_between(centre, start_ref) > th.move_r;
-    if (cur.distance >= o.min_carry_distance || displaced) out.push_back(cur);
+    // No hand carries a part in a blink: shorter motions are estimation jumps (the rest goes on,
+    // at the pose the samples settle to).
+    const bool long_enough = cur.end - cur.start >= o.min_carry_frames;
+    if (long_enough && (displaced || cur.distance >= o.min_carry_distance)) out.push_back(cur);
     rest.assign(moving.begin() + j, moving.end());
     ref = rest_centre();
     moving.clear();
     run = 0;
     in_motion = false;
   }
-  if (in_motion) {  // still moving at the end of the video: it rests at its last sample
-    cur.end = frames.back();
+  if (in_motion && frames.back() - cur.start >= o.min_carry_frames) {
+    cur.end = frames.back();  // still moving at the end of the video: it rests at its last sample
     cur.end_confidence = 0.3;
     out.push_back(cur);
   }

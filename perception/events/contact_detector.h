@@ -20,8 +20,13 @@ struct ContactDetectorOptions {
   double rest_rotation = 0.05;      // rad
   int min_moving_frames = 3;        // frames beyond the move thresholds that confirm a grasp
   int min_rest_frames = 4;          // still frames in a row that confirm a release
+  double rest_velocity = 0.0015;    // m per frame: those frames must not drift faster
+  int min_carry_frames = 6;         // a shorter motion is an estimation jump, not a carry
+  double outlier_reprojection = 4.0;  // samples fitting their markers this many times worse
+                                      // than the track's median (and > 0.6 px) are ignored
   double min_carry_distance = 0.03; // m, farthest a carried part goes from where it rested
   double noise_factor = 5.0;        // thresholds >= this times the track's measured jitter
+  double sigma_factor = 3.0;        // and >= this times each sample's expected precision
   double co_motion_tolerance = 0.03;  // m, change of relative position of parts riding together
   double min_confidence = 0.5;      // samples below are ignored
 };
@@ -46,6 +51,10 @@ struct ContactAnalysis {
   // motions are not among them: with one hand, the part did not really move then.
   std::vector<MotionInterval> motions_of(int object) const;
 };
+
+// Which samples of a track the detector trusts: valid, confident enough, and fitting their
+// markers not much worse than the track's median (partly hidden markers fit worse).
+std::vector<bool> usable_samples(const std::vector<PoseSample>& samples, const ContactDetectorOptions& options);
 
 // Motions of one track (the first stage, exposed for tests and tuning).
 std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& samples, int object,

@@ -17,10 +17,13 @@ std::optional<std::pair<int, int>> rest_interval(const std::vector<MotionInterva
   return std::make_pair(first, last);
 }
 
-std::optional<Pose> rest_pose(const std::vector<PoseSample>& samples, int first, int last) {
-  PoseList poses;
+std::optional<Pose> rest_pose(const std::vector<PoseSample>& samples, int first, int last,
+                              const ContactDetectorOptions& options) {
+  const std::vector<bool> usable = usable_samples(samples, options);
+  PoseList poses, weak;
   for (int f = std::max(0, first); f <= last && f < static_cast<int>(samples.size()); ++f)
-    if (samples[f].valid) poses.push_back(samples[f].pose);
+    if (samples[f].valid) (usable[f] ? poses : weak).push_back(samples[f].pose);
+  if (poses.empty()) poses = weak;
   if (poses.empty()) return std::nullopt;
   return robust_static_pose(poses);
 }
@@ -39,7 +42,7 @@ std::optional<Pose> nearest_sample(const std::vector<PoseSample>& samples, int f
 }  // namespace
 
 Demonstration build_demonstration(const PoseTracks& tracks, const ContactAnalysis& contacts, const std::string& task,
-                                  std::vector<std::string>* warnings) {
+                                  const ContactDetectorOptions& options, std::vector<std::string>* warnings) {
   Demonstration d;
   d.task = task;
   d.fps = tracks.fps;
@@ -68,7 +71,7 @@ Demonstration build_demonstration(const PoseTracks& tracks, const ContactAnalysi
       const int row = rows[p];
       std::optional<Pose> pose;
       if (const auto rest = rest_interval(motions[row], e.frame, tracks.frames))
-        pose = rest_pose(tracks.samples[row], rest->first, rest->second);
+        pose = rest_pose(tracks.samples[row], rest->first, rest->second, options);
       if (!pose) {
         pose = nearest_sample(tracks.samples[row], e.frame);
         if (warnings)

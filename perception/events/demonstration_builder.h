@@ -16,12 +16,15 @@ namespace demoplan::perception {
 // [first, last] frames of the rest of a part around `frame`; nullopt when it moves then.
 std::optional<std::pair<int, int>> rest_interval(const std::vector<MotionInterval>& motions, int frame, int frames);
 
-// Robust average of the valid samples in [first, last]; nullopt when none.
-std::optional<Pose> rest_pose(const std::vector<PoseSample>& samples, int first, int last);
+// Robust average of the samples in [first, last] the detector trusts (usable_samples; of all
+// valid ones when it trusts none); nullopt when none is valid.
+std::optional<Pose> rest_pose(const std::vector<PoseSample>& samples, int first, int last,
+                              const ContactDetectorOptions& options = {});
 
 // `warnings` receives one line per part pose that had to be guessed (a part never seen at
 // rest around an event).
 Demonstration build_demonstration(const PoseTracks& tracks, const ContactAnalysis& contacts, const std::string& task,
+                                  const ContactDetectorOptions& options = {},
                                   std::vector<std::string>* warnings = nullptr);
 
 }  // namespace demoplan::perception

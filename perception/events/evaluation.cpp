@@ -72,6 +72,10 @@ DemonstrationEvaluation evaluate_demonstration(const Demonstration& detected, co
   r.max_translation_error_mm = trans.empty() ? 0.0 : *std::max_element(trans.begin(), trans.end());
   r.max_rotation_error_deg = rot.empty() ? 0.0 : *std::max_element(rot.begin(), rot.end());
   if (!mssd.empty()) r.median_mssd_mm = median(mssd);
+  r.timing_errors = timing;
+  r.translation_errors_mm = trans;
+  r.rotation_errors_deg = rot;
+  r.mssd_errors_mm = mssd;
   return r;
 }
 

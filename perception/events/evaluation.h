@@ -28,6 +28,8 @@ struct DemonstrationEvaluation {
   // (the largest displacement of a model point); -1 without models.
   double median_mssd_mm = -1.0;
   std::vector<EventMatch> matches;
+  // The individual values the medians are taken over, for pooling several evaluations.
+  std::vector<double> timing_errors, translation_errors_mm, rotation_errors_deg, mssd_errors_mm;
 };
 
 // `models`: part id -> points of its model in the part frame (metres), for the MSSD.

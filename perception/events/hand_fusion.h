@@ -1,10 +1,13 @@
 #pragma once
 // Hand-contact detections (100DOH) fused with the pose-based events. A hand in contact with a
-// portable object touches the part whose projected box overlaps that object's box best; runs
-// of such frames per part are its contacts. A contact run that overlaps a carry of the same
-// part sets the carry's grasp (first contact frame) and release (frame after the last) when
-// they lie within `max_shift` frames of the pose-based ones; a run on a part that was never
-// seen moving (hidden while carried) adds a carry of its own when no other carry overlaps it.
+// portable object touches the part whose projected box overlaps that object's box best (a part
+// not seen for a while is placed where it was last seen, and then the nearest box counts);
+// runs of such frames per part are its contacts. A contact run that overlaps a carry of the
+// same part sets the carry's grasp (first contact frame) and release (frame after the last)
+// when they lie within `max_shift` frames of the pose-based ones; several runs within one
+// carry split it (the hand put the part down and took it again where the camera could not
+// see it); a run on a part that was never seen moving (hidden while carried) adds a carry of
+// its own when no other carry overlaps it.
 #include <vector>
 
 #include <Eigen/Geometry>

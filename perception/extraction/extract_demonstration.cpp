@@ -69,8 +69,8 @@ ExtractionResult extract_demonstration(const std::string& video_path, const Came
     for (const auto& obj : scene.objects) bounds.push_back(marker_extent(obj));
     fuse_hand_contacts(r.contacts, hand_contact_runs(hands, r.raw, bounds, camera, o.hands), r.raw, o.hands);
   }
-  r.demonstration = build_demonstration(r.raw, r.contacts, scene.task, &r.warnings);
-  r.smoothed = smooth_tracks(r.raw, r.contacts);
+  r.demonstration = build_demonstration(r.raw, r.contacts, scene.task, o.contacts, &r.warnings);
+  r.smoothed = smooth_tracks(r.raw, r.contacts, o.contacts);
   r.frames = frames;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.frames_per_second = r.seconds > 0 ? frames / r.seconds : 0.0;

@@ -27,7 +27,7 @@ struct ExtractionOptions {
   std::string camera_source = "camera";  // names the camera file in messages
   bool board_extrinsics = false;  // estimate the camera pose from the board even if the file gives one
   int board_frames = 10;          // frames (with the board seen) averaged for the camera pose
-  double bop_weight = 0.5;
+  double bop_weight = 0.7;  // confidence of a BOP estimate: its score times this
   std::function<void(int done, int total)> progress;
   const std::atomic<bool>* cancel = nullptr;
 };

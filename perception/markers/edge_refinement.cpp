@@ -92,11 +92,18 @@ bool refine_corners_on_edges(const cv::Mat& grey, std::array<cv::Point2f, 4>& co
     // A side partly hidden bends off the line: fit, drop the points off it, fit again, and
     // require most of the side to be on it.
     if (!fit_line(edge, lines[k])) return false;
-    std::vector<cv::Point2d> on_line;
+    std::vector<double> residual;
     for (const auto& p : edge) {
       const cv::Point2d d = p - lines[k].point;
-      if (std::abs(d.x * lines[k].direction.y - d.y * lines[k].direction.x) < 0.35) on_line.push_back(p);
+      residual.push_back(std::abs(d.x * lines[k].direction.y - d.y * lines[k].direction.x));
     }
+    std::vector<double> sorted = residual;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
+    // Off the line: farther than 3 robust standard deviations of the noise (0.35 px at least).
+    const double band = std::max(0.35, 3.0 * 1.4826 * sorted[sorted.size() / 2]);
+    std::vector<cv::Point2d> on_line;
+    for (size_t i = 0; i < edge.size(); ++i)
+      if (residual[i] < band) on_line.push_back(edge[i]);
     if (static_cast<int>(on_line.size()) < std::max(4, (7 * n) / 10) || !fit_line(on_line, lines[k])) return false;
   }
   std::array<cv::Point2f, 4> refined;

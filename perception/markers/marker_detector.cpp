@@ -11,6 +11,7 @@ namespace demoplan::perception {
 
 MarkerDetector::MarkerDetector(const std::string& dictionary, const MarkerDetectorOptions& o)
     : edge_refinement_(o.edge_refinement),
+      smooth_(o.smooth_candidates),
       dictionary_(marker_dictionary(dictionary)),
       parameters_(cv::aruco::DetectorParameters::create()) {
   cells_ = dictionary_->markerSize + 2;
@@ -27,7 +28,13 @@ std::vector<MarkerDetection> MarkerDetector::detect(const cv::Mat& image) const 
   else grey = image;
   std::vector<std::vector<cv::Point2f>> corners;
   std::vector<int> ids;
-  cv::aruco::detectMarkers(grey, dictionary_, corners, ids, parameters_);
+  if (smooth_) {
+    cv::Mat smooth;
+    cv::GaussianBlur(grey, smooth, cv::Size(3, 3), 0);
+    cv::aruco::detectMarkers(smooth, dictionary_, corners, ids, parameters_);
+  } else {
+    cv::aruco::detectMarkers(grey, dictionary_, corners, ids, parameters_);
+  }
   std::vector<MarkerDetection> out(ids.size());
   for (size_t i = 0; i < ids.size(); ++i) {
     out[i].id = ids[i];
@@ -40,8 +47,12 @@ std::vector<MarkerDetection> MarkerDetector::detect(const cv::Mat& image) const 
         continue;
       }
     }
+    // A window of about a third of a cell: larger ones reach the white margin's outer corner.
+    double side = 1e9;
+    for (int k = 0; k < 4; ++k) side = std::min(side, cv::norm(out[i].corners[(k + 1) % 4] - out[i].corners[k]));
+    const int win = std::clamp(static_cast<int>(side / cells_ / 3), 1, 3);
     std::vector<cv::Point2f> c(out[i].corners.begin(), out[i].corners.end());
-    cv::cornerSubPix(grey, c, cv::Size(3, 3), cv::Size(-1, -1),
+    cv::cornerSubPix(grey, c, cv::Size(win, win), cv::Size(-1, -1),
                      cv::TermCriteria(cv::TermCriteria::MAX_ITER | cv::TermCriteria::EPS, 30, 0.01));
     std::copy(c.begin(), c.end(), out[i].corners.begin());
   }

@@ -21,6 +21,9 @@ struct MarkerDetectorOptions {
   // and without it, OpenCV's CORNER_REFINE_SUBPIX. (SUBPIX first would hurt: on small markers
   // its window also sees the outer corner of the white margin and settles in between.)
   bool edge_refinement = true;
+  // A 3x3 Gaussian on the image the candidates are searched in (not on the one the corners
+  // are measured in): noise otherwise makes thousands of candidate contours.
+  bool smooth_candidates = true;
   int threshold_window_min = 7;     // px, adaptive threshold windows (odd)
   int threshold_window_max = 23;
   int threshold_window_step = 8;
@@ -35,6 +38,7 @@ public:
 
 private:
   bool edge_refinement_;
+  bool smooth_;
   int cells_;  // marker side in cells, black border included
   cv::Ptr<cv::aruco::Dictionary> dictionary_;
   cv::Ptr<cv::aruco::DetectorParameters> parameters_;

@@ -47,10 +47,14 @@ std::optional<MarkerBoard> place_board(const DemoScript& s, const Pose& table_to
       if (!free) continue;
       std::vector<cv::Point2f> corners;
       bool visible = true;
-      for (int c = 0; c < 4; ++c) {
-        const Eigen::Vector3d world = table_top * Eigen::Vector3d(c & 1 ? x + w : x, c & 2 ? y + h : y, 0.01);
+      // Nothing may hide any of a 3x3 grid of points on the board.
+      for (int g = 0; g < 9 && visible; ++g) {
+        const Eigen::Vector3d world = table_top * Eigen::Vector3d(x + w * (g % 3) / 2, y + h * (g / 3) / 2, 0.01);
         for (const auto& box : obstacles)
           if (!box.contains(world) && segment_hits_box(camera.world_T_camera->translation(), world, box)) visible = false;
+      }
+      for (int c = 0; c < 4; ++c) {
+        const Eigen::Vector3d world = table_top * Eigen::Vector3d(c & 1 ? x + w : x, c & 2 ? y + h : y, 0.01);
         const Eigen::Vector3d p = camera_T_world * world;
         if (p.z() < 0.3) { visible = false; break; }
         const cv::Point2d q = camera.project(p);

@@ -38,7 +38,7 @@ bool segment_hits_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const 
 }
 
 Camera place_camera(const DemoScript& s, const std::vector<Eigen::AlignedBox3d>& obstacles,
-                    const CameraPlacementOptions& o) {
+                    const std::vector<std::vector<ObjectMarker>>& markers, const CameraPlacementOptions& o) {
   // The points to keep in view: every part's box corners along the video (every 3rd frame).
   std::vector<Eigen::Vector3d> points, rest_centres;
   for (int f = 0; f < s.frames; f += 3)
@@ -47,6 +47,27 @@ Camera place_camera(const DemoScript& s, const std::vector<Eigen::AlignedBox3d>&
         points.push_back(s.poses[f][k] * s.bounds[k].corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
   std::vector<int> rest_frames{0};
   for (const auto& c : s.carries) rest_frames.push_back(c.release);
+  // Where each resting part's markers are: centre and normal in the world.
+  struct MarkerView {
+    Eigen::Vector3d centre, normal;
+    std::vector<Eigen::Vector3d> points;  // centre and corners
+  };
+  struct Rest {
+    std::vector<MarkerView> markers;
+  };
+  std::vector<Rest> rests;
+  for (int f : rest_frames)
+    for (size_t k = 0; k < s.object_ids.size() && k < markers.size(); ++k) {
+      Rest r;
+      for (const auto& m : markers[k]) {
+        const Pose T = s.poses[f][k] * m.object_T_marker;
+        MarkerView v{T.translation(), T.linear().col(2), {T.translation()}};
+        for (int c = 0; c < 4; ++c)
+          v.points.push_back(T * Eigen::Vector3d(c & 1 ? m.size / 2 : -m.size / 2, c & 2 ? m.size / 2 : -m.size / 2, 0));
+        r.markers.push_back(v);
+      }
+      rests.push_back(r);
+    }
   for (int f : rest_frames)
     for (size_t k = 0; k < s.object_ids.size(); ++k) {
       // The centre and the corners pulled in a little (corners on the support are hidden anyway).
@@ -98,7 +119,23 @@ Camera place_camera(const DemoScript& s, const std::vector<Eigen::AlignedBox3d>&
           ++hidden;
           break;
         }
-    const double score = hidden * 0.1 + distance;  // a hidden point costs as much as 10 cm farther
+    int blind = 0;  // resting parts that show no marker
+    for (const auto& r : rests) {
+      bool seen = false;
+      for (const auto& m : r.markers) {
+        if (m.normal.dot((eye - m.centre).normalized()) < 0.34) continue;
+        bool free = true;
+        for (const auto& p : m.points)
+          for (const auto& box : obstacles) free = free && (box.contains(p) || !segment_hits_box(eye, p, box));
+        if (free) {
+          seen = true;
+          break;
+        }
+      }
+      blind += !seen;
+    }
+    // A hidden point costs as much as 10 cm farther, a part without a visible marker 10 m.
+    const double score = blind * 10.0 + hidden * 0.1 + distance;
     if (score < best_score) {
       best_score = score;
       best.world_T_camera = look_at(eye, target);

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "perception/camera/camera_model.h"
+#include "perception/markers/marker_scene.h"
 #include "perception/synthetic/demo_script.h"
 
 namespace demoplan::perception {
@@ -14,7 +15,7 @@ namespace demoplan::perception {
 struct CameraPlacementOptions {
   cv::Size image_size{1280, 720};
   double fx = 1100.0;            // px (about 60 degrees horizontal field of view)
-  std::vector<double> elevations{0.6, 0.75, 0.9};  // rad above the horizontal, tried in turn
+  std::vector<double> elevations{0.45, 0.6, 0.75, 0.9};  // rad above the horizontal, tried in turn
   double margin_px = 60.0;       // keep the motion this far inside the image border
   int azimuths = 24;
 };
@@ -22,8 +23,11 @@ struct CameraPlacementOptions {
 // Whether the segment from a to b (its last 5 cm excluded) crosses the box.
 bool segment_hits_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::AlignedBox3d& box);
 
-// `obstacles`: world boxes of furniture that may hide parts (not the floor).
+// `obstacles`: world boxes of furniture that may hide parts (not the floor). `markers`: per part
+// (optional), the markers on it; a view where a resting part shows none of them (facing the
+// camera within 70 degrees and not hidden) is avoided above all.
 Camera place_camera(const DemoScript& script, const std::vector<Eigen::AlignedBox3d>& obstacles,
+                    const std::vector<std::vector<ObjectMarker>>& markers = {},
                     const CameraPlacementOptions& options = {});
 
 }  // namespace demoplan::perception

@@ -12,8 +12,8 @@
 namespace demoplan::perception {
 
 struct MarkerLayoutOptions {
-  double max_size = 0.08;       // m, black square side
-  double face_fraction = 0.7;   // of the face's shorter side (the white margin must fit too)
+  double max_size = 0.10;       // m, black square side
+  double face_fraction = 0.72;  // of the face's shorter side (the white margin must fit too)
   double standoff = 0.001;      // m, in front of the box face
 };
 

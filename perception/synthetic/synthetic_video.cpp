@@ -183,7 +183,10 @@ SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::stri
   std::vector<Eigen::AlignedBox3d> bounds;
   for (const auto& p : assets.parts) bounds.push_back(p.bounds().cast<double>());
   DemoScript script = make_demo_script(task, bounds, o.time_scale);
-  Camera camera = place_camera(script, assets.obstacles);
+  std::vector<std::vector<ObjectMarker>> part_markers;
+  for (size_t k = 0; k < script.object_ids.size(); ++k)
+    part_markers.push_back(box_face_markers(bounds[k], kMarkersPerPart * static_cast<int>(k)));
+  Camera camera = place_camera(script, assets.obstacles, part_markers);
   add_hand(script, camera.world_T_camera->translation());
   if (o.board && assets.table_top) {
     MarkerBoard board;
@@ -203,7 +206,7 @@ SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::stri
   markers.camera = "camera.json";
   markers.dictionary = kDictionary;
   for (size_t k = 0; k < script.object_ids.size(); ++k)
-    markers.objects.push_back({script.object_ids[k], true, box_face_markers(bounds[k], kMarkersPerPart * static_cast<int>(k))});
+    markers.objects.push_back({script.object_ids[k], true, part_markers[k]});
 
   // The static part: floor, furniture, board.
   const Pose& world_T_camera = *camera.world_T_camera;

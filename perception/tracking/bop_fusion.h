@@ -13,6 +13,6 @@ namespace demoplan::perception {
 // (InputError naming its line); one of a model no tracked part is made of is skipped with a
 // warning. Returns the number of samples added.
 int fuse_bop_detections(PoseTracks& tracks, const std::vector<BopDetection>& detections, const Pose& world_T_camera,
-                        const std::string& source, double weight = 0.5, std::vector<std::string>* warnings = nullptr);
+                        const std::string& source, double weight = 0.7, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace demoplan::perception

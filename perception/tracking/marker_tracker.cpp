@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "perception/markers/marker_pose.h"
 
@@ -36,6 +37,25 @@ Pose refine(const std::vector<cv::Point3d>& object, const std::vector<cv::Point2
   rvec_tvec_from_pose(guess, rvec, tvec);
   cv::solvePnPRefineLM(object, image, camera.camera_matrix(), camera.distortion_coefficients(), rvec, tvec);
   return pose_from_rvec_tvec(rvec, tvec);
+}
+
+// Standard deviations of a pose fitted to these points, for corner noise `sigma_px`: from the
+// Jacobian of the projection (first-order covariance of the least-squares fit).
+std::pair<double, double> pose_sigmas(const std::vector<cv::Point3d>& object, const Pose& T, const Camera& camera,
+                                      double sigma_px) {
+  cv::Vec3d rvec, tvec;
+  rvec_tvec_from_pose(T, rvec, tvec);
+  std::vector<cv::Point2d> projected;
+  cv::Mat J;
+  cv::projectPoints(object, rvec, tvec, camera.camera_matrix(), camera.distortion_coefficients(), projected, J);
+  cv::Mat J6 = J.colRange(0, 6);
+  cv::Mat cov;
+  if (cv::invert(J6.t() * J6, cov, cv::DECOMP_SVD) == 0) return {1.0, 1.0};
+  cov *= sigma_px * sigma_px;
+  cv::Mat er, et;
+  cv::eigen(cov(cv::Rect(0, 0, 3, 3)), er);
+  cv::eigen(cov(cv::Rect(3, 3, 3, 3)), et);
+  return {std::sqrt(std::max(0.0, et.at<double>(0))), std::sqrt(std::max(0.0, er.at<double>(0)))};
 }
 
 bool coplanar(const std::vector<const ObjectMarker*>& markers) {
@@ -81,8 +101,22 @@ void MarkerTracker::add_frame(int frame, const std::vector<MarkerDetection>& mar
         object[k].emplace_back(q.x(), q.y(), q.z());
       }
       image[k].assign(det->corners.begin(), det->corners.end());
-      for (const auto& c : marker_pose_candidates(*det, mk->size, camera_))
-        candidates.push_back(c.camera_T_marker * mk->object_T_marker.inverse());
+      const auto cands = marker_pose_candidates(*det, mk->size, camera_);
+      if (cands.empty()) continue;
+      // Seen nearly edge-on, a marker's corners say little and are often found off.
+      const std::vector<cv::Point2f> quad(det->corners.begin(), det->corners.end());
+      double longest = 0, shortest = 1e9;
+      for (int c = 0; c < 4; ++c) {
+        const double side = cv::norm(quad[(c + 1) % 4] - quad[c]);
+        longest = std::max(longest, side);
+        shortest = std::min(shortest, side);
+      }
+      if (std::abs(cv::contourArea(quad)) < options_.min_squareness * longest * longest ||
+          (!det->edges_refined && shortest < options_.min_unrefined_side_px)) {
+        image[k].clear();  // not used below
+        continue;
+      }
+      for (const auto& c : cands) candidates.push_back(c.camera_T_marker * mk->object_T_marker.inverse());
     }
     if (candidates.empty()) continue;
     // Markers a pose explains (each within max_reprojection_px) and their joint error.
@@ -90,6 +124,7 @@ void MarkerTracker::add_frame(int frame, const std::vector<MarkerDetection>& mar
       in.clear();
       total = 0;
       for (size_t k = 0; k < n; ++k) {
+        if (image[k].empty()) continue;  // left out
         const double e = rms_error(object[k], image[k], T, camera_);
         if (e <= options_.inlier_px) in.push_back(k), total += e;
       }
@@ -140,7 +175,8 @@ void MarkerTracker::add_frame(int frame, const std::vector<MarkerDetection>& mar
     obs.frame = frame;
     obs.markers = static_cast<int>(in.size());
     obs.refined = std::all_of(in.begin(), in.end(), [&](size_t k) { return seen[o][k].first->edges_refined; });
-    obs.alternatives.push_back({best, best_err});
+    const auto [sigma_t, sigma_r] = pose_sigmas(obj, best, camera_, options_.corner_sigma_px);
+    obs.alternatives.push_back({best, best_err, sigma_t, sigma_r});
     std::vector<const ObjectMarker*> used;
     for (size_t k : in) used.push_back(seen[o][k].second);
     if (coplanar(used)) {
@@ -151,7 +187,7 @@ void MarkerTracker::add_frame(int frame, const std::vector<MarkerDetection>& mar
         const double flipped_err = rms_error(obj, img, flipped, camera_);
         if (rotation_distance(flipped, best) > 0.17 &&
             flipped_err < std::max(options_.ambiguity_ratio * best_err, best_err + options_.ambiguity_margin_px))
-          obs.alternatives.push_back({flipped, flipped_err});
+          obs.alternatives.push_back({flipped, flipped_err, sigma_t, sigma_r});
         break;
       }
     }
@@ -197,11 +233,13 @@ PoseTracks MarkerTracker::finish() {
       s.pose = world_T_camera * a.camera_T_object;
       s.markers = obs[i].markers;
       s.reprojection_px = a.reprojection_px;
+      s.sigma_translation = a.sigma_translation;
+      s.sigma_rotation = a.sigma_rotation;
       s.ambiguous = ambiguous;
-      s.confidence = 1.0 / (1.0 + a.reprojection_px * a.reprojection_px);
-      if (obs[i].markers == 1) s.confidence *= 0.9;
-      if (!obs[i].refined) s.confidence *= 0.6;  // corners not checked against the marker's edges
-      if (ambiguous) s.confidence *= unresolved ? 0.4 : 0.8;
+      // Confidence that the pose is right (not how precise it is: sigma_* say that).
+      s.confidence = std::exp(-std::pow(a.reprojection_px / 1.5, 2));
+      if (!obs[i].refined) s.confidence *= 0.8;  // corners not checked against the marker's edges
+      if (ambiguous) s.confidence *= unresolved ? 0.65 : 0.85;
     }
   }
   return tracks;

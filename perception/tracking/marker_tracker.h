@@ -16,10 +16,17 @@ namespace demoplan::perception {
 
 struct MarkerTrackerOptions {
   double ambiguity_ratio = 3.0;   // flipped solution within this factor of the best's error: ambiguous
-  double ambiguity_margin_px = 0.5;
+  double ambiguity_margin_px = 0.1;
   double inlier_px = 2.0;            // a marker farther off the part's pose is left out
   double max_reprojection_px = 3.0;  // worse: no sample
   int max_gap = 30;               // frames an ambiguous sample may look for its reference
+  double corner_sigma_px = 0.15;  // corner noise assumed for the samples' expected precision
+  // Markers seen nearly edge-on (quad area below this fraction of its longest side squared,
+  // about 70 deg from frontal) are left out: their corners say little and are often off.
+  double min_squareness = 0.35;
+  // A marker whose edges could not be measured and whose shortest side is shorter than this
+  // (px) is left out: its bits are barely resolved and its corners often off by pixels.
+  double min_unrefined_side_px = 20.0;
 };
 
 class MarkerTracker {
@@ -34,6 +41,7 @@ private:
   struct Alternative {
     Pose camera_T_object;
     double reprojection_px;
+    double sigma_translation = 0.0, sigma_rotation = 0.0;
   };
   struct Observation {
     int frame = -1;

@@ -16,6 +16,10 @@ struct PoseSample {
   int markers = 0;               // markers it was computed from (0: another source)
   double reprojection_px = 0.0;
   bool ambiguous = false;        // the planar two-fold ambiguity was resolved from other frames
+  // Expected standard deviation of the estimate (from the geometry of the points it was
+  // computed from); 0 when unknown.
+  double sigma_translation = 0.0;  // m, along the worst direction
+  double sigma_rotation = 0.0;     // rad
 };
 
 struct PoseTracks {

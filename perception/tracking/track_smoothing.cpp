@@ -7,7 +7,8 @@
 
 namespace demoplan::perception {
 
-PoseTracks smooth_tracks(const PoseTracks& raw, const ContactAnalysis& contacts, int half_window) {
+PoseTracks smooth_tracks(const PoseTracks& raw, const ContactAnalysis& contacts, const ContactDetectorOptions& options,
+                         int half_window) {
   PoseTracks out = raw;
   const int frames = raw.frames;
   for (size_t k = 0; k < raw.object_ids.size(); ++k) {
@@ -19,7 +20,7 @@ PoseTracks smooth_tracks(const PoseTracks& raw, const ContactAnalysis& contacts,
     int first = 0;
     for (size_t m = 0; m <= motions.size(); ++m) {
       const int last = m < motions.size() ? motions[m].start : frames - 1;
-      if (const auto pose = rest_pose(in, first, last)) {
+      if (const auto pose = rest_pose(in, first, last, options)) {
         double conf = 0;
         int n = 0;
         for (int f = first; f <= last; ++f)

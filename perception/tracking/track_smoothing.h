@@ -7,6 +7,7 @@
 
 namespace demoplan::perception {
 
-PoseTracks smooth_tracks(const PoseTracks& raw, const ContactAnalysis& contacts, int half_window = 2);
+PoseTracks smooth_tracks(const PoseTracks& raw, const ContactAnalysis& contacts, const ContactDetectorOptions& options = {},
+                         int half_window = 2);
 
 }  // namespace demoplan::perception

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "perception/video/ffmpeg_log.h"
 
 namespace demoplan::perception {
 
@@ -14,6 +15,7 @@ std::string frame_field(int index) { return "frame " + std::to_string(index); }
 VideoReader::VideoReader(const std::string& path, size_t cache_frames) : path_(path), cache_(cache_frames) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, "", "video file not found");
   if (std::filesystem::file_size(path) == 0) throw InputError(path, frame_field(0), "the file is empty");
+  quiet_ffmpeg_log();
   capture_.open(path, cv::CAP_FFMPEG);
   if (!capture_.isOpened())
     throw InputError(path, frame_field(0),
@@ -32,7 +34,6 @@ VideoReader::VideoReader(const std::string& path, size_t cache_frames) : path_(p
   if (frame_count_ <= 0) {
     // The container announces no length: count by decoding once.
     int n = 1;
-    cv::Mat skip;
     while (capture_.grab()) ++n;
     frame_count_ = n;
     capture_.set(cv::CAP_PROP_POS_FRAMES, 1);

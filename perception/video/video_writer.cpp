@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "perception/video/ffmpeg_log.h"
 
 namespace demoplan::perception {
 
@@ -14,6 +15,7 @@ VideoWriter::VideoWriter(const std::string& path, double fps, cv::Size size, con
   tmp_ = (p.parent_path() / ("." + p.stem().string() + ".partial" + p.extension().string())).string();
   if (fourcc.size() != 4) throw InputError(path, "fourcc", "'" + fourcc + "' is not a four-character code");
   const int code = cv::VideoWriter::fourcc(fourcc[0], fourcc[1], fourcc[2], fourcc[3]);
+  quiet_ffmpeg_log();
   writer_.open(tmp_, cv::CAP_FFMPEG, code, fps, size, true);
   if (!writer_.isOpened())
     throw InputError(path, "", "cannot write a '" + fourcc + "' video here (codec, container or folder)");

@@ -76,6 +76,26 @@ private slots:
     QVERIFY(placements >= 3);
   }
 
+  void aFailureSaysWhatWasNotReached() {
+    Document doc(test::dataDir().toStdString());
+    doc.open(test::sampleProject());
+    PlannerSettings s = doc.plannerSettings();
+    s.planner.time_limit = 0.3;  // far too short to solve
+    s.planner.eta_sample_tree = 0.0;
+    doc.setPlannerSettings(s);
+    PlannerPanel panel(&doc);
+    panel.plan();
+    QVERIFY(test::waitFor([&] { return !doc.planner()->isRunning(); }, 10000));
+    QVERIFY(doc.result() != nullptr);
+    QVERIFY(!doc.result()->summary.solved);
+    QCOMPARE(doc.stepState(Step::Plan).status, StepStatus::Error);
+    const QString msg = panel.messageLabel()->text();
+    QVERIFY2(msg.contains(QStringLiteral("No path")), qPrintable(msg));
+    // Without video guidance no transition tree is rooted: the message lists them and the
+    // table shows the states nobody reached.
+    QVERIFY2(msg.contains(QStringLiteral("never sampled")) || msg.contains(QStringLiteral("have no node")), qPrintable(msg));
+  }
+
   void planIsRefusedWhileTheDemonstrationIsBroken() {
     Document doc(test::dataDir().toStdString());
     doc.open(test::sampleProject());

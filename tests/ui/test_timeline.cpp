@@ -1,6 +1,7 @@
 // Editing events through the timeline changes the demonstration; undo restores it; a broken rule
 // is shown with its reason and jumps to the event.
 #include <QLabel>
+#include <QPushButton>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -98,6 +99,35 @@ private slots:
     QCOMPARE(doc_->currentFrame(), doc_->demonstration().events[issue.event].frame);
     doc_->undoStack()->undo();
     QCOMPARE(demonstration_to_json(doc_->demonstration()), original_);
+  }
+
+  void detectingEventsInTheVideoReplacesThemUndoably() {
+    QVERIFY2(doc_->extractionBlocker().isEmpty(), qPrintable(doc_->extractionBlocker()));
+    QVERIFY(panel_->detectButton()->isEnabled());
+    QTest::mouseClick(panel_->detectButton(), Qt::LeftButton);
+    QVERIFY(doc_->extractor()->isRunning());
+    QVERIFY(test::waitFor([&] { return !doc_->extractor()->isRunning(); }, 30000));
+    QVERIFY2(panel_->detectionLabel()->text().startsWith(QStringLiteral("Found")), qPrintable(panel_->detectionLabel()->text()));
+    const Demonstration& d = doc_->demonstration();
+    QCOMPARE(d.object_ids, std::vector<std::string>({"YCBV_02", "YCBV_05"}));  // the scene's order
+    QCOMPARE(int(d.events.size()), 4);
+    // The detected frames are within a few frames of the labelled ones.
+    const int labelled[] = {9, 48, 60, 97};
+    for (int i = 0; i < 4; ++i) QVERIFY2(std::abs(d.events[i].frame - labelled[i]) <= 5, qPrintable(QString::number(d.events[i].frame)));
+    QVERIFY(demonstration_to_json(d) != original_);
+    QCOMPARE(doc_->undoStack()->count(), 1);
+    doc_->undoStack()->undo();
+    QCOMPARE(demonstration_to_json(doc_->demonstration()), original_);
+  }
+
+  void detectionCanBeCancelled() {
+    QVERIFY(doc_->startExtraction());
+    doc_->extractor()->cancel();
+    QVERIFY(!doc_->extractor()->isRunning());
+    QVERIFY(panel_->detectButton()->isEnabled());
+    QTest::qWait(200);
+    QCOMPARE(demonstration_to_json(doc_->demonstration()), original_);
+    QCOMPARE(doc_->undoStack()->count(), 0);
   }
 
   void draggingPastAnotherEventReordersAndUndoes() {

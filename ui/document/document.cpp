@@ -60,7 +60,25 @@ const char* type_word(EventType t) { return t == EventType::Grasp ? "grasp" : "r
 }  // namespace
 
 Document::Document(std::string default_data_dir, QObject* parent)
-    : QObject(parent), data_dir_(std::move(default_data_dir)), mesh_cache_(std::make_unique<MeshCache>()), runner_(this) {
+    : QObject(parent),
+      data_dir_(std::move(default_data_dir)),
+      mesh_cache_(std::make_unique<MeshCache>()),
+      runner_(this),
+      extractor_(this) {
+  connect(&extractor_, &ExtractionRunner::finished, this, [this](const ExtractionOutcome& o) {
+    if (o.ok) {
+      if (o.demonstration.events.empty()) {
+        ExtractionOutcome none = o;
+        none.ok = false;
+        none.error = "no grasp or release was found in the video";
+        emit extractionDone(none);
+        return;
+      }
+      replaceDemonstration(o.demonstration, tr("Detect events in the video (%1 events)").arg(o.demonstration.events.size()));
+    }
+    emit extractionDone(o);
+    emit stepsChanged();
+  });
   connect(&undo_, &QUndoStack::cleanChanged, this, [this] { emit modifiedChanged(isModified()); });
   connect(&runner_, &PlanRunner::finished, this, &Document::onPlanFinished);
   connect(&runner_, &PlanRunner::started, this, &Document::stepsChanged);
@@ -137,6 +155,7 @@ void Document::open(const QString& file) {
 void Document::install(Project p, std::shared_ptr<const Scene> scene, std::shared_ptr<const BenchmarkTask> task,
                        const QString& file) {
   if (runner_.isRunning()) runner_.cancel();
+  if (extractor_.isRunning()) extractor_.cancel();
   project_ = std::move(p);
   scene_ = std::move(scene);
   task_ = std::move(task);
@@ -492,6 +511,32 @@ void Document::setCamera(const QString& file) {
   emit stepsChanged();
 }
 
+void Document::setMarkers(const QString& file) {
+  project_.markers = file.isEmpty() ? std::string() : QFileInfo(file).absoluteFilePath().toStdString();
+  setModified();
+  emit stepsChanged();
+}
+
+QString Document::extractionBlocker() const {
+  if (!hasProject()) return tr("Open a project first");
+  if (extractor_.isRunning()) return tr("Detection is running");
+  if (!video_) return tr("Open the video first (File > Open Video…)");
+  if (!camera_) return tr("Open the camera calibration first (File > Open Camera Calibration…)");
+  if (project_.markers.empty()) return tr("Open the marker scene first (File > Open Marker Scene…): which markers are on which part");
+  return {};
+}
+
+bool Document::startExtraction() {
+  if (!extractionBlocker().isEmpty()) return false;
+  ExtractionJob job;
+  job.video = project_.video;
+  job.camera = project_.camera;
+  job.markers = project_.markers;
+  for (const auto& o : scene_->objects) job.object_ids.push_back(o.id);
+  job.task = project_.scene.task;
+  return extractor_.start(std::move(job));
+}
+
 // ----------------------------------------------------------------------------- planning
 
 void Document::setPlannerSettings(const PlannerSettings& s) {
@@ -634,7 +679,7 @@ StepState Document::stepState(Step step) const {
     case Step::Export: {
       if (!exported_to_.isEmpty()) return {StepStatus::Ok, tr("Exported to %1").arg(exported_to_)};
       if (result_ && result_->path && result_->summary.valid && !resultStale())
-        return {StepStatus::None, tr("Ready to export (File > Export…)")};
+        return {StepStatus::None, tr("Ready to export: File > Export Program… (Ctrl+E)")};
       return {StepStatus::None, tr("Plan a valid path first")};
     }
   }

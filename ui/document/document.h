@@ -11,6 +11,7 @@
 
 #include "core/demo/benchmark_scene.h"
 #include "core/planning/path_interpolation.h"
+#include "ui/document/extraction_runner.h"
 #include "ui/document/plan_runner.h"
 #include "ui/project/project.h"
 
@@ -120,6 +121,15 @@ public:
   const perception::Camera* camera() const { return camera_.get(); }
   QString videoError() const { return video_error_; }
   QString cameraError() const { return camera_error_; }
+  // The marker scene (which ArUco markers are on which part), to detect the events in the video.
+  QString markersPath() const { return QString::fromStdString(project_.markers); }
+  void setMarkers(const QString& file);
+
+  // ---- event detection (perception): replaces the demonstration as one undoable edit
+  ExtractionRunner* extractor() { return &extractor_; }
+  // What is missing to detect events; empty when startExtraction() can run.
+  QString extractionBlocker() const;
+  bool startExtraction();
 
   // ---- planning
   const PlannerSettings& plannerSettings() const { return project_.planner; }
@@ -149,6 +159,7 @@ signals:
   void resultChanged();
   void stepsChanged();
   void saved(const QString& file);
+  void extractionDone(const ExtractionOutcome& outcome);
 
 private:
   void loadScene(const SceneReference& ref, std::shared_ptr<const Scene>& scene,
@@ -179,6 +190,7 @@ private:
   std::unique_ptr<perception::Camera> camera_;
   QString video_error_, camera_error_;
   PlanRunner runner_;
+  ExtractionRunner extractor_;
   std::shared_ptr<const PlanResultData> result_;
   std::unique_ptr<PathInterpolator> interpolator_;
   QString exported_to_;

@@ -32,6 +32,7 @@
 #include "core/demo/benchmark_scene.h"
 #include "core/error.h"
 #include "ui/view3d/scene_view.h"
+#include "ui/widgets/export_dialog.h"
 #include "ui/widgets/planner_panel.h"
 #include "ui/widgets/pose_editor.h"
 #include "ui/widgets/result_panel.h"
@@ -96,6 +97,17 @@ MainWindow::MainWindow(MainWindowOptions options, QWidget* parent)
     }
   });
   connect(step_bar_, &StepBar::stepClicked, this, &MainWindow::showStep);
+  // The step bar follows the panel the operator works in.
+  connect(qApp, &QApplication::focusChanged, this, [this](QWidget*, QWidget* now) {
+    for (QWidget* w = now; w; w = w->parentWidget()) {
+      if (w == video_dock_) return step_bar_->setCurrent(Step::Video);
+      if (w == timeline_dock_) return step_bar_->setCurrent(Step::Events);
+      if (w == inspector_dock_) return step_bar_->setCurrent(Step::Poses);
+      if (w == planner_dock_ || w == result_dock_) return step_bar_->setCurrent(Step::Plan);
+      if (qobject_cast<ExportDialog*>(w)) return step_bar_->setCurrent(Step::Export);
+    }
+  });
+  connect(doc_->planner(), &PlanRunner::started, this, [this] { step_bar_->setCurrent(Step::Plan); });
   connect(result_, &ResultPanel::exportRequested, this, [this] { export_action_->trigger(); });
 
   autosave_timer_ = new QTimer(this);
@@ -193,14 +205,16 @@ void MainWindow::createActions() {
   auto* video = file->addAction(tr("Open &Video…"), this, [this] { openVideo(); });
   video->setStatusTip(tr("Open the recording of the demonstration (or drop it on the window)"));
   file->addAction(tr("Open &Camera Calibration…"), this, [this] { openCamera(); });
+  file->addAction(tr("Open &Marker Scene…"), this, [this] {
+    if (!doc_->hasProject()) return;
+    const QString f = QFileDialog::getOpenFileName(this, tr("Open marker scene"), QFileInfo(doc_->filePath()).absolutePath(),
+                                                   tr("Marker scenes (*.json);;All files (*)"));
+    if (!f.isEmpty()) doc_->setMarkers(f);
+  })->setStatusTip(tr("Which ArUco markers are on which part: needed to detect the events in the video"));
   file->addSeparator();
-  export_action_ = file->addAction(tr("&Export Program…"), this, [this] {
-    reportError(tr("Export"), tr("The exporters (UR, KUKA KRL, KUKA Sunrise, Franka, ROS, CSV) are not part of this "
-                                 "build yet. The planned path is saved with the project (<project>.path.json)."));
-  });
+  export_action_ = file->addAction(tr("&Export Program…"), this, [this] { showExportDialog(); });
   export_action_->setShortcut(QKeySequence(QStringLiteral("Ctrl+E")));
-  export_action_->setEnabled(false);
-  export_action_->setToolTip(tr("Exporters are not available in this build yet"));
+  export_action_->setStatusTip(tr("Write the planned path as a program for the cell controller (UR, KUKA, Franka, ROS, CSV)"));
   file->addSeparator();
   auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setShortcut(QKeySequence::Quit);
@@ -228,6 +242,12 @@ void MainWindow::createActions() {
     if (doc_->selectedEvent() >= 0) doc_->removeEvent(doc_->selectedEvent());
   });
   delete_action_->setShortcuts({QKeySequence(Qt::Key_Delete), QKeySequence(Qt::Key_Backspace)});
+  auto* detect = edit->addAction(tr("Detect &Events in the Video"), this, [this] {
+    timeline_dock_->show();
+    timeline_dock_->raise();
+    if (!doc_->startExtraction()) reportError(tr("Detect events"), doc_->extractionBlocker());
+  });
+  detect->setShortcut(QKeySequence(QStringLiteral("Ctrl+D")));
   auto* next_issue = edit->addAction(tr("Go to the &Broken Rule"), this, [this] { timeline_->jumpToIssue(0); });
   next_issue->setShortcut(QKeySequence(QStringLiteral("Ctrl+J")));
 
@@ -321,6 +341,7 @@ void MainWindow::updateTitle() {
   if (doc_->isTemplate()) name += tr(" (sample: Save As to keep your changes)");
   setWindowTitle(QStringLiteral("%1[*] — demoplan").arg(name));
   setWindowModified(doc_->isModified());
+  save_action_->setEnabled(doc_->hasProject());
 }
 
 void MainWindow::updateSteps() {
@@ -329,10 +350,7 @@ void MainWindow::updateSteps() {
     const PlanSnapshot& s = doc_->planner()->lastSnapshot();
     step_bar_->setState(Step::Plan, {StepStatus::Busy, tr("Planning… %1 s, %L2 nodes").arg(s.elapsed_s, 0, 'f', 1).arg(qulonglong(s.nodes))});
   }
-  if (!doc_->hasProject()) return;
-  const StepState exp = doc_->stepState(Step::Export);
-  if (exp.status == StepStatus::None && doc_->result() && doc_->result()->summary.valid && !doc_->resultStale())
-    step_bar_->setState(Step::Export, {StepStatus::Warning, tr("The exporters are not part of this build yet; the path is saved with the project")});
+  export_action_->setEnabled(doc_->hasProject() && doc_->result() && doc_->result()->path && !doc_->planner()->isRunning());
 }
 
 void MainWindow::updateStatus() {
@@ -423,6 +441,7 @@ void MainWindow::showStep(Step step) {
     case Step::Export:
       bring(result_dock_);
       if (doc_->interpolator()) doc_->setPlaybackT(doc_->playbackT());
+      if (export_action_->isEnabled() && options_.interactive) showExportDialog();
       break;
   }
   statusBar()->showMessage(doc_->stepState(step).message, 8000);
@@ -650,41 +669,56 @@ void MainWindow::removeAutosave() {
                 QStringLiteral(".path.json"));
 }
 
-bool MainWindow::offerRecovery() {
+std::optional<MainWindow::Autosave> MainWindow::pendingAutosave() const {
   const QDir dir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave"));
   const QFileInfoList files = dir.entryInfoList({QStringLiteral("*.demoplan")}, QDir::Files, QDir::Time);
-  if (files.isEmpty() || !options_.interactive) return false;
-  const QFileInfo latest = files.front();
-  QFile origin_file(latest.absoluteFilePath() + QStringLiteral(".origin"));
-  QString origin;
-  if (origin_file.open(QIODevice::ReadOnly)) origin = QString::fromUtf8(origin_file.readAll());
+  if (files.isEmpty()) return std::nullopt;
+  Autosave a;
+  a.file = files.front().absoluteFilePath();
+  a.time = files.front().lastModified();
+  QFile origin(a.file + QStringLiteral(".origin"));
+  if (origin.open(QIODevice::ReadOnly)) a.origin = QString::fromUtf8(origin.readAll());
+  return a;
+}
+
+bool MainWindow::recoverAutosave(const Autosave& a) {
+  try {
+    doc_->open(a.file);
+    if (!a.origin.isEmpty()) doc_->setFilePath(a.origin);
+    else doc_->setTemplate(true);
+    doc_->setModified();
+  } catch (const std::exception& e) {
+    reportError(tr("Cannot recover"), tr("%1\n\nThe autosave is kept in %2.").arg(QString::fromUtf8(e.what()), a.file));
+    return false;
+  }
+  QFile::remove(a.file);
+  QFile::remove(a.file + QStringLiteral(".origin"));
+  updateTitle();
+  statusBar()->showMessage(tr("Recovered the autosaved work: save it to keep it"), 10000);
+  return true;
+}
+
+void MainWindow::discardAutosaves() {
+  const QDir dir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave"));
+  for (const QFileInfo& f : dir.entryInfoList(QDir::Files)) QFile::remove(f.absoluteFilePath());
+}
+
+bool MainWindow::offerRecovery() {
+  const std::optional<Autosave> a = pendingAutosave();
+  if (!a || !options_.interactive) return false;
   QMessageBox box(QMessageBox::Question, tr("Recover unsaved work?"),
                   tr("demoplan did not close properly last time. Unsaved changes to %1 were autosaved %2.")
-                      .arg(origin.isEmpty() ? tr("an untitled project") : QFileInfo(origin).fileName(),
-                           latest.lastModified().toString(Qt::TextDate)),
+                      .arg(a->origin.isEmpty() ? tr("an untitled project") : QFileInfo(a->origin).fileName(),
+                           a->time.toString(Qt::TextDate)),
                   QMessageBox::NoButton, this);
   QPushButton* recover = box.addButton(tr("Recover"), QMessageBox::AcceptRole);
   box.addButton(tr("Discard"), QMessageBox::DestructiveRole);
   box.exec();
   if (box.clickedButton() != recover) {
-    for (const QFileInfo& f : files) {
-      QFile::remove(f.absoluteFilePath());
-      QFile::remove(f.absoluteFilePath() + QStringLiteral(".origin"));
-    }
+    discardAutosaves();
     return false;
   }
-  try {
-    doc_->open(latest.absoluteFilePath());
-    if (!origin.isEmpty()) doc_->setFilePath(origin);
-    else doc_->setTemplate(true);
-    doc_->setModified();
-  } catch (const std::exception& e) {
-    reportError(tr("Cannot recover"), QString::fromUtf8(e.what()));
-    return false;
-  }
-  updateTitle();
-  statusBar()->showMessage(tr("Recovered the autosaved work: save it to keep it"), 10000);
-  return true;
+  return recoverAutosave(*a);
 }
 
 void MainWindow::startUp(const QString& file) {
@@ -749,6 +783,21 @@ void MainWindow::dropEvent(QDropEvent* e) {
 }
 
 // ------------------------------------------------------------------------------- misc
+
+ExportDialog* MainWindow::showExportDialog() {
+  if (!doc_->result() || !doc_->result()->path) {
+    reportError(tr("Export"), tr("There is no planned path to export yet: press Plan (F5) first."));
+    return nullptr;
+  }
+  auto* dialog = new ExportDialog(doc_, options_.interactive, this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &QDialog::accepted, this, [this] {
+    statusBar()->showMessage(doc_->stepState(Step::Export).message, 8000);
+  });
+  if (options_.interactive) dialog->open();
+  else dialog->show();
+  return dialog;
+}
 
 void MainWindow::addEventAtPlayhead(EventType type) {
   if (!doc_->hasProject()) return;

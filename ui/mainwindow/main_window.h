@@ -3,8 +3,10 @@
 // timeline, inspector, planner, result, history) whose layout is restored on the next start,
 // menus, a toolbar, a status bar, recent files, keyboard shortcuts, autosave with recovery after
 // a crash, drag-and-drop of projects and videos.
+#include <QDateTime>
 #include <QMainWindow>
 #include <QPointer>
+#include <optional>
 
 #include "ui/document/document.h"
 
@@ -19,6 +21,7 @@ class QDropEvent;
 
 namespace demoplan::ui {
 
+class ExportDialog;
 class PlannerPanel;
 class PoseEditor;
 class ResultPanel;
@@ -68,7 +71,19 @@ public:
   // recent project, else the sample.
   void startUp(const QString& file_from_command_line);
   void autosaveNow();
+  // A project autosaved by a session that did not end cleanly (the newest), if any.
+  struct Autosave {
+    QString file;    // the autosave
+    QString origin;  // the project it belongs to; empty for an untitled project or the sample
+    QDateTime time;
+  };
+  std::optional<Autosave> pendingAutosave() const;
+  // Opens it; Save then writes to its origin (or asks, without one).
+  bool recoverAutosave(const Autosave& autosave);
+  void discardAutosaves();
   void showStep(Step step);
+  // Opens the export dialog (modeless without interaction, for tests); null when nothing to export.
+  ExportDialog* showExportDialog();
 
 protected:
   void closeEvent(QCloseEvent*) override;

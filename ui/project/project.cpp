@@ -134,6 +134,7 @@ Json project_to_json(const Project& p, const std::string& file) {
          {"scene", scene},
          {"video", to_stored(p.video, file)},
          {"camera", to_stored(p.camera, file)},
+         {"markers", to_stored(p.markers, file)},
          {"demonstration", demonstration_to_json(p.demonstration)},
          {"planner", planner_to_json(p.planner)},
          {"result", p.result ? result_to_json(*p.result, file) : Json(nullptr)},
@@ -159,6 +160,7 @@ Project project_from_json(const Json& json, const std::string& file) {
   if (scene.has("data_dir")) p.scene.data_dir = from_stored(scene["data_dir"].string(), file);
   p.video = root.has("video") ? from_stored(root["video"].string(), file) : "";
   p.camera = root.has("camera") ? from_stored(root["camera"].string(), file) : "";
+  p.markers = root.has("markers") ? from_stored(root["markers"].string(), file) : "";
   const JsonField demo = root["demonstration"];
   if (!demo.value().is_object()) demo.fail("must be a demoplan-demonstration object");
   p.demonstration = demonstration_from_json(demo.value(), file + ": demonstration");

@@ -6,6 +6,8 @@
 //            "data_dir": "..."},               // optional; absent: the bundled benchmark data
 //  "video": "video.mp4",                       // relative to the project file; "" when none
 //  "camera": "camera.json",                    // demoplan-camera or OpenCV calibration; "" none
+//  "markers": "markers.json",                  // demoplan-marker-scene: which markers are on which
+//                                              // part (to detect the events in the video); "" none
 //  "demonstration": {"format": "demoplan-demonstration", "version": 1, ...},  // with the edits
 //  "planner": {"seed": 1, "time_limit_s": 60, "max_iterations": 10000000, "eta": 0.1,
 //              "step_rad": 0.3, "resolution_rad": 0.01, "shortcut": true, "shortcut_time_s": 1},
@@ -65,6 +67,7 @@ struct Project {
   SceneReference scene;
   std::string video;   // absolute; empty when none
   std::string camera;  // absolute; empty when none
+  std::string markers;  // absolute; empty when none
   Demonstration demonstration;
   PlannerSettings planner;
   std::optional<ResultSummary> result;

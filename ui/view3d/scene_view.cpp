@@ -7,6 +7,7 @@
 #include <QMouseEvent>
 #include <QOpenGLShaderProgram>
 #include <QOpenGLTexture>
+#include <QTimer>
 #include <QToolButton>
 #include <QWheelEvent>
 #include <cmath>
@@ -187,7 +188,8 @@ SceneView::SceneView(Document* doc, QWidget* parent) : QOpenGLWidget(parent), do
     tree_lines_.data.clear();
     tree_points_.data.clear();
     root_points_.data.clear();
-    tree_lines_.dirty = tree_points_.dirty = root_points_.dirty = true;
+    root_outline_.data.clear();
+    tree_lines_.dirty = tree_points_.dirty = root_points_.dirty = root_outline_.dirty = true;
     tree_edges_ = tree_roots_ = 0;
     rebuildPathTrace();
     updateHud();
@@ -210,8 +212,9 @@ SceneView::SceneView(Document* doc, QWidget* parent) : QOpenGLWidget(parent), do
       if (q->size() != scene_->robot.model.nq) continue;
       const QVector3D p = toQt(gripper_pose(*scene_, *q).translation());
       pushPoint(root_points_.data, p, q == &g->q_start ? kOkColor : kErrorColor);
+      pushPoint(root_outline_.data, p, QColor(0x20, 0x20, 0x20));
     }
-    root_points_.dirty = true;
+    root_points_.dirty = root_outline_.dirty = true;
     update();
   });
   if (doc_->hasProject()) rebuildScene();
@@ -324,8 +327,19 @@ void SceneView::rebuildScene() {
     if (it.mesh >= 0) items_.push_back(it);
   };
   auto visuals = [](const Link& l) -> const std::vector<Geometry>& { return l.visuals.empty() ? l.collisions : l.visuals; };
-  for (int l = 0; l < int(s.robot.model.links.size()); ++l)
-    for (const Geometry& g : visuals(s.robot.model.links[l])) add(Owner::Robot, 0, l, g);
+  for (int l = 0; l < int(s.robot.model.links.size()); ++l) {
+    const Link& link = s.robot.model.links[l];
+    if (light_geometry_ && !link.collisions.empty()) {
+      // The collision shapes, in the visual's colour.
+      const Eigen::Vector4d color = link.visuals.empty() ? Eigen::Vector4d(0.9, 0.9, 0.9, 1) : link.visuals.front().color;
+      for (Geometry g : link.collisions) {
+        g.color = color;
+        add(Owner::Robot, 0, l, g);
+      }
+    } else {
+      for (const Geometry& g : visuals(link)) add(Owner::Robot, 0, l, g);
+    }
+  }
   for (int f = 0; f < int(s.furniture.size()); ++f)
     for (int l = 0; l < int(s.furniture[f].model.links.size()); ++l)
       for (const Geometry& g : visuals(s.furniture[f].model.links[l])) add(Owner::Furniture, f, l, g);
@@ -398,7 +412,7 @@ void SceneView::releaseGl() {
     delete g.texture;
   }
   gpu_meshes_.clear();
-  for (LineBuffer* b : {&grid_, &tree_lines_, &tree_points_, &root_points_, &path_trace_, &gizmo_, &selection_}) {
+  for (LineBuffer* b : {&grid_, &tree_lines_, &tree_points_, &root_points_, &root_outline_, &path_trace_, &gizmo_, &selection_}) {
     if (b->vao) glDeleteVertexArrays(1, &b->vao);
     if (b->vbo) glDeleteBuffers(1, &b->vbo);
     b->vao = b->vbo = 0;
@@ -461,6 +475,16 @@ void SceneView::initializeGL() {
              qPrintable(line_program_->log()));
     return;
   }
+  const QString renderer = QString::fromLatin1(reinterpret_cast<const char*>(glGetString(GL_RENDERER))).toLower();
+  const QByteArray mode = qgetenv("DEMOPLAN_RENDER");
+  const bool software = renderer.contains(QLatin1String("llvmpipe")) || renderer.contains(QLatin1String("softpipe")) ||
+                        renderer.contains(QLatin1String("software"));
+  const bool light = mode == "light" || (mode != "full" && software);
+  if (light != light_geometry_) {
+    light_geometry_ = light;
+    rebuildScene();  // nothing is on the GPU yet: gl_ready_ is still false
+  }
+  if (light_geometry_) gl_info_ += tr(" · light geometry");
   connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
     makeCurrent();
     releaseGl();
@@ -562,7 +586,11 @@ void SceneView::paintGL() {
   if (show_trees_) {
     drawLines(tree_lines_, GL_LINES, 1, false, true, tree_alpha);
     drawLines(tree_points_, GL_POINTS, 3.5f, true, true, tree_alpha);
-    drawLines(root_points_, GL_POINTS, 11.0f, true, !playing_path, playing_path ? 0.3f : 1.0f);
+    if (!playing_path) {
+      // Roots: a dark ring around a white dot (start green, goal red, transitions white).
+      drawLines(root_outline_, GL_POINTS, 13.0f, true, false);
+      drawLines(root_points_, GL_POINTS, 9.0f, true, false);
+    }
   }
   if (playing_path) {
     glLineWidth(2.0f);
@@ -601,7 +629,8 @@ void SceneView::onPlanStarted() {
   tree_lines_.data.clear();
   tree_points_.data.clear();
   root_points_.data.clear();
-  tree_lines_.dirty = tree_points_.dirty = root_points_.dirty = true;
+  root_outline_.data.clear();
+  tree_lines_.dirty = tree_points_.dirty = root_points_.dirty = root_outline_.dirty = true;
   tree_edges_ = tree_roots_ = 0;
   path_trace_.data.clear();
   path_trace_.dirty = true;
@@ -615,12 +644,23 @@ void SceneView::onPlanProgress(const PlanSnapshot& s) {
     pushLine(tree_lines_.data, e.from, e.to, c, 0.75f);
     pushPoint(tree_points_.data, e.to, c, 0.95f);
   }
-  for (const TreeRoot& r : s.new_roots) pushPoint(root_points_.data, r.position, QColor(0x20, 0x20, 0x20));
+  for (const TreeRoot& r : s.new_roots) {
+    pushPoint(root_points_.data, r.position, QColor(0xff, 0xff, 0xff));
+    pushPoint(root_outline_.data, r.position, QColor(0x20, 0x20, 0x20));
+  }
+  root_outline_.dirty = true;
   tree_edges_ += s.new_edges.size();
   tree_roots_ += s.new_roots.size();
   tree_lines_.dirty = tree_points_.dirty = root_points_.dirty = true;
   updateHud();
-  if (show_trees_) update();
+  // At most ~6 frames a second while the trees grow: the planner's snapshots come at 20 Hz.
+  if (show_trees_ && !update_pending_) {
+    update_pending_ = true;
+    QTimer::singleShot(150, this, [this] {
+      update_pending_ = false;
+      update();
+    });
+  }
 }
 
 void SceneView::rebuildPathTrace() {
@@ -632,6 +672,13 @@ void SceneView::rebuildPathTrace() {
     const SceneState st = interp->at(i / 400.0);
     pushPoint(path_trace_.data, toQt(gripper_pose(*scene_, st.q).translation()), QColor(0xff, 0x6d, 0x00));
   }
+}
+
+void SceneView::setLightGeometry(bool on) {
+  if (on == light_geometry_) return;
+  light_geometry_ = on;
+  rebuildScene();
+  update();
 }
 
 void SceneView::setShowTrees(bool on) {

@@ -42,8 +42,13 @@ public:
   // "OpenGL 4.5 (Core Profile) Mesa ..., llvmpipe" once initialised; empty before.
   QString glInfo() const { return gl_info_; }
   bool glFailed() const { return gl_failed_; }
-  // Milliseconds the last paintGL took.
+  // Milliseconds the last paintGL took (CPU side).
   double lastPaintMs() const { return last_paint_ms_; }
+  // Light geometry: the robot drawn with its (coarse) collision meshes. On by default with a
+  // software OpenGL renderer (llvmpipe), where the visual meshes (166k triangles for the Panda)
+  // would make every frame cost ~100 ms; DEMOPLAN_RENDER=full or =light overrides.
+  bool lightGeometry() const { return light_geometry_; }
+  void setLightGeometry(bool on);
 
 signals:
   void objectPicked(int object);
@@ -112,10 +117,12 @@ private:
   bool gl_failed_ = false;
   QString gl_info_;
   std::unique_ptr<QOpenGLShaderProgram> mesh_program_, line_program_;
-  LineBuffer grid_, tree_lines_, tree_points_, root_points_, path_trace_, gizmo_, selection_;
+  LineBuffer grid_, tree_lines_, tree_points_, root_points_, root_outline_, path_trace_, gizmo_, selection_;
   size_t tree_edges_ = 0, tree_roots_ = 0;
   bool show_trees_ = true;
   bool fit_pending_ = true;
+  bool light_geometry_ = false;
+  bool update_pending_ = false;  // a throttled repaint while planning
   double last_paint_ms_ = 0.0;
   QLabel* hud_;
   QToolButton* trees_button_;

@@ -147,7 +147,9 @@ void PoseEditor::refresh() {
   event_label_->setText(tr("<b>%1 of %2</b> at %3%4")
                             .arg(eventTypeName(e.type), QString::fromStdString(d.object_ids[e.object]),
                                  frameText(e.frame, doc_->fps()),
-                                 doc_->selectedEvent() < 0 ? tr(" <i>(last event before the playhead)</i>") : QString()));
+                                 doc_->selectedEvent() >= 0 ? QString()
+                                 : e.frame <= doc_->currentFrame() ? tr(" <i>(the last event before the playhead)</i>")
+                                                                   : tr(" <i>(the first event)</i>")));
   if (obj >= 0) {
     const Pose T = world_pose_at_event(doc_->scene(), d, ev, obj, doc_->initialConfiguration());
     const Eigen::Vector3d rpy = rpyFromRotation(T.linear());

@@ -7,6 +7,8 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QProgressBar>
+#include <QPushButton>
 #include <QToolTip>
 #include <QVBoxLayout>
 #include <cmath>
@@ -338,6 +340,63 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(2);
+  // Event detection: run perception on the video, with progress and cancel.
+  auto* bar = new QHBoxLayout;
+  bar->setContentsMargins(6, 2, 6, 0);
+  detect_ = new QPushButton(tr("Detect Events in the Video"), this);
+  detect_->setToolTip(tr("Find the grasps and releases and the parts' poses in the video (markers on the parts, "
+                         "hand near a part). Replaces the events; Undo brings them back."));
+  cancel_ = new QPushButton(tr("Cancel"), this);
+  progress_ = new QProgressBar(this);
+  progress_->setMaximumWidth(220);
+  progress_->setTextVisible(true);
+  detection_ = new QLabel(this);
+  detection_->setWordWrap(false);
+  bar->addWidget(detect_);
+  bar->addWidget(progress_);
+  bar->addWidget(cancel_);
+  bar->addWidget(detection_, 1);
+  layout->addLayout(bar);
+  connect(detect_, &QPushButton::clicked, this, [this] { doc_->startExtraction(); });
+  connect(cancel_, &QPushButton::clicked, this, [this] { doc_->extractor()->cancel(); });
+  ExtractionRunner* ex = doc_->extractor();
+  connect(ex, &ExtractionRunner::started, this, [this] {
+    progress_->setValue(0);
+    detection_->setText(tr("Detecting…"));
+    refreshDetection();
+  });
+  connect(ex, &ExtractionRunner::progress, this, [this](int done, int total) {
+    progress_->setRange(0, total);
+    progress_->setValue(done);
+    progress_->setFormat(tr("frame %v of %m"));
+  });
+  connect(ex, &ExtractionRunner::cancelled, this, [this] {
+    detection_->setText(tr("Detection cancelled: the events are unchanged."));
+    refreshDetection();
+  });
+  connect(doc_, &Document::extractionDone, this, [this](const ExtractionOutcome& o) {
+    if (o.ok) {
+      int low = 0;
+      for (const auto& e : o.demonstration.events) low += e.confidence < kLowConfidence;
+      QString text = tr("Found %1 events in %2 frames (%3 s). Check them, then the poses; Ctrl+Z brings the previous events back.")
+                         .arg(o.demonstration.events.size())
+                         .arg(o.frames)
+                         .arg(o.seconds, 0, 'f', 1);
+      if (!o.warnings.empty()) text += QStringLiteral(" ") + QString::fromStdString(o.warnings.front());
+      detection_->setText(text);
+      detection_->setToolTip(text);
+    } else {
+      detection_->setText(tr("<span style='color:%1'>Detection failed:</span> %2")
+                              .arg(kErrorColor.name(), QString::fromStdString(o.error).toHtmlEscaped()));
+      detection_->setToolTip(QString::fromStdString(o.error));
+    }
+    refreshDetection();
+  });
+  connect(doc_, &Document::stepsChanged, this, &TimelinePanel::refreshDetection);
+  connect(doc_, &Document::projectLoaded, this, [this] {
+    detection_->clear();
+    refreshDetection();
+  });
   timeline_ = new TimelineWidget(doc, this);
   validity_ = new QLabel(this);
   validity_->setTextFormat(Qt::RichText);
@@ -352,6 +411,7 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
   connect(doc_, &Document::demonstrationChanged, this, &TimelinePanel::refresh);
   connect(doc_, &Document::projectLoaded, this, &TimelinePanel::refresh);
   refresh();
+  refreshDetection();
 }
 
 void TimelinePanel::jumpToIssue(int index) {
@@ -359,6 +419,18 @@ void TimelinePanel::jumpToIssue(int index) {
   if (index < 0 || index >= int(issues.size())) return;
   if (issues[index].event >= 0) doc_->selectEvent(issues[index].event);
   timeline_->setFocus();
+}
+
+void TimelinePanel::refreshDetection() {
+  const bool running = doc_->extractor()->isRunning();
+  const QString blocker = doc_->extractionBlocker();
+  detect_->setEnabled(!running && blocker.isEmpty());
+  detect_->setToolTip(blocker.isEmpty() || running ? tr("Find the grasps and releases and the parts' poses in the video "
+                                                        "(markers on the parts, hand near a part). Replaces the events; "
+                                                        "Undo brings them back.")
+                                                   : blocker);
+  cancel_->setVisible(running);
+  progress_->setVisible(running);
 }
 
 void TimelinePanel::refresh() {

@@ -10,6 +10,8 @@
 
 class QLabel;
 class QPainter;
+class QProgressBar;
+class QPushButton;
 
 namespace demoplan::ui {
 
@@ -61,14 +63,21 @@ public:
   explicit TimelinePanel(Document* doc, QWidget* parent = nullptr);
   TimelineWidget* timeline() const { return timeline_; }
   QLabel* validityLabel() const { return validity_; }
+  QPushButton* detectButton() const { return detect_; }
+  QLabel* detectionLabel() const { return detection_; }
   // Jumps to the issue at `index` of Document::issues() (what clicking its link does).
   void jumpToIssue(int index);
 
 private:
   void refresh();
+  void refreshDetection();
   Document* doc_;
   TimelineWidget* timeline_;
   QLabel* validity_;
+  QPushButton* detect_;
+  QPushButton* cancel_;
+  QProgressBar* progress_;
+  QLabel* detection_;
 };
 
 }  // namespace demoplan::ui

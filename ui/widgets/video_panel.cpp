@@ -18,6 +18,7 @@
 #include "perception/camera/camera_model.h"
 #include "perception/markers/marker_detector.h"
 #include "perception/video/video_reader.h"
+#include "ui/document/demo_poses.h"
 #include "ui/widgets/style.h"
 
 namespace demoplan::ui {
@@ -133,8 +134,15 @@ void FrameView::computeOverlay() {
   const perception::Camera* cam = doc_->camera();
   if (!doc_->hasProject() || !cam || !cam->world_T_camera || !show_outlines_) return;
   const Pose camera_T_world = cam->world_T_camera->inverse();
-  const PoseList poses = doc_->demoPosesAt(doc_->currentFrame());
+  const int frame = doc_->currentFrame();
+  const PoseList poses = doc_->demoPosesAt(frame);
+  const Demonstration& demo = doc_->demonstration();
   for (size_t o = 0; o < model_points_.size() && o < poses.size(); ++o) {
+    // In the hand between its grasp and its release the part's pose is not known (the 3D view
+    // interpolates it); an outline there would look wrong without being wrong.
+    bool at_event = false;
+    for (const auto& e : demo.events) at_event |= e.frame == frame && e.object == int(o);
+    if (!at_event && held_at_frame(demo, int(o), frame)) continue;
     std::vector<cv::Point2f> pts;
     pts.reserve(model_points_[o].size());
     const Pose T = camera_T_world * poses[o];
@@ -178,6 +186,7 @@ void FrameView::paintEvent(QPaintEvent*) {
   p.translate(target.topLeft());
   p.scale(s, s);
   const Demonstration& d = doc_->demonstration();
+  std::vector<QRectF> labels;  // placed so far, to keep names from overlapping
   for (size_t o = 0; o < outlines_.size(); ++o) {
     if (outlines_[o].isEmpty()) continue;
     const bool selected = int(o) == doc_->selectedObject();
@@ -187,14 +196,24 @@ void FrameView::paintEvent(QPaintEvent*) {
     fill.setAlphaF(selected ? 0.18f : 0.08f);
     p.setBrush(fill);
     p.drawPolygon(outlines_[o]);
+    if (o >= d.object_ids.size()) continue;
     const QRectF br = outlines_[o].boundingRect();
     QFont f = font();
     f.setPointSizeF(f.pointSizeF() / s);
     f.setBold(true);
     p.setFont(f);
+    const QString name = QString::fromStdString(d.object_ids[o]);
+    QRectF label(br.left(), br.top() - p.fontMetrics().height() - 2 / s, p.fontMetrics().horizontalAdvance(name),
+                 p.fontMetrics().height());
+    for (int tries = 0; tries < 4; ++tries) {
+      bool clash = false;
+      for (const QRectF& other : labels) clash |= other.intersects(label);
+      if (!clash) break;
+      label.translate(0, -label.height());
+    }
+    labels.push_back(label);
     p.setPen(c);
-    if (o < d.object_ids.size())
-      p.drawText(QPointF(br.left(), br.top() - 4 / s), QString::fromStdString(d.object_ids[o]));
+    p.drawText(label, Qt::AlignLeft | Qt::AlignVCenter, name);
   }
   for (const auto& m : markers_) {
     p.setPen(QPen(QColor(0x00, 0xe5, 0xff), 1.5 / s));

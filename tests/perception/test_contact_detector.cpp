@@ -1,0 +1,149 @@
+// Grasp/release detection from pose tracks: timing, hysteresis against jitter, occlusion while
+// carried, parts riding together on a tray, outliers, and the Demonstration it gives.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "perception/events/contact_detector.h"
+#include "perception/events/demonstration_builder.h"
+#include "perception/synthetic/demo_script.h"
+#include "perception/tracking/track_smoothing.h"
+
+using namespace demoplan;
+using namespace demoplan::perception;
+
+namespace {
+
+Pose at(double x, double y, double z, double yaw = 0.0) {
+  Pose p = Pose::Identity();
+  p.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  p.translation() << x, y, z;
+  return p;
+}
+
+// Parts at rest at `rest`, carried between (grasp, release) frames to the next rest.
+struct Plan {
+  int object;
+  int grasp, release;
+  Pose to;
+};
+
+PoseTracks make_tracks(int frames, const std::vector<Pose, Eigen::aligned_allocator<Pose>>& start,
+                       const std::vector<Plan>& plans, double noise = 0.0, unsigned seed = 1) {
+  PoseTracks t;
+  for (size_t k = 0; k < start.size(); ++k) {
+    t.object_ids.push_back("P" + std::to_string(k));
+    t.planning.push_back(true);
+  }
+  t.resize(frames);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> n(0.0, 1.0);
+  for (size_t k = 0; k < start.size(); ++k) {
+    Pose cur = start[k];
+    for (int f = 0; f < frames; ++f) {
+      Pose p = cur;
+      for (const auto& pl : plans)
+        if (pl.object == static_cast<int>(k)) {
+          if (f > pl.grasp && f < pl.release) p = carry_pose(cur, pl.to, double(f - pl.grasp) / (pl.release - pl.grasp));
+          if (f == pl.release) cur = p = pl.to;
+        }
+      if (noise > 0) p.translation() += Eigen::Vector3d(n(rng), n(rng), n(rng)) * noise;
+      PoseSample& s = t.samples[k][f];
+      s.valid = true;
+      s.pose = p;
+      s.confidence = 1.0;
+      s.markers = 2;
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST(ContactDetector, EventsAtTheRightFrames) {
+  const PoseTracks t = make_tracks(120, {at(0, 0, 0.8), at(0.3, 0, 0.8)},
+                                   {{0, 10, 40, at(0.2, 0.5, 1.3)}, {1, 55, 90, at(-0.1, 0.4, 1.3, 0.5)}});
+  const ContactAnalysis a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 2u);
+  EXPECT_EQ(a.carries[0].object, 0);
+  EXPECT_EQ(a.carries[0].start, 10);
+  EXPECT_EQ(a.carries[0].end, 40);
+  EXPECT_EQ(a.carries[1].start, 55);
+  EXPECT_EQ(a.carries[1].end, 90);
+  const Demonstration d = build_demonstration(t, a, "test");
+  EXPECT_TRUE(validate(d).empty());
+  ASSERT_EQ(d.events.size(), 4u);
+  EXPECT_TRUE(d.events[1].poses[0].isApprox(at(0.2, 0.5, 1.3), 1e-6));  // released at its new rest
+  EXPECT_TRUE(d.events[2].poses[1].isApprox(at(0.3, 0, 0.8), 1e-6));
+}
+
+TEST(ContactDetector, JitterMakesNoEventsAndTimingHolds) {
+  const PoseTracks t = make_tracks(120, {at(0, 0, 0.8), at(0.3, 0, 0.8)}, {{1, 30, 70, at(0.4, 0.5, 1.3)}}, 0.0015, 7);
+  const ContactAnalysis a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_LE(std::abs(a.carries[0].start - 30), 1);
+  EXPECT_LE(std::abs(a.carries[0].end - 70), 2);
+  EXPECT_NEAR(a.jitter_translation[0], 0.0015, 0.0008);
+}
+
+TEST(ContactDetector, PartHiddenWhileCarried) {
+  PoseTracks t = make_tracks(100, {at(0, 0, 0.8)}, {{0, 20, 60, at(0.5, 0.2, 0.8)}});
+  for (int f = 28; f < 55; ++f) t.samples[0][f].valid = false;  // behind something
+  const ContactAnalysis a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_EQ(a.carries[0].start, 20);
+  EXPECT_EQ(a.carries[0].end, 60);
+  // Hidden from just before the grasp to after the release: the events still come out.
+  for (int f = 18; f < 63; ++f) t.samples[0][f].valid = false;
+  const ContactAnalysis b = detect_contacts(t);
+  ASSERT_EQ(b.carries.size(), 1u);
+  EXPECT_EQ(b.carries[0].start, 17);
+  EXPECT_EQ(b.carries[0].end, 63);
+}
+
+TEST(ContactDetector, PartsRidingOnATrayMakeNoEvents) {
+  PoseTracks t = make_tracks(100, {at(0, 0, 0.8), at(0.2, 0, 0.8)}, {});
+  for (int f = 30; f < 100; ++f)
+    for (int k = 0; k < 2; ++k) {
+      const double s = std::min(1.0, (f - 30) / 30.0);
+      t.samples[k][f].pose.translation() += Eigen::Vector3d(0, 1.2 * s, 0);
+    }
+  const ContactAnalysis a = detect_contacts(t);
+  EXPECT_TRUE(a.carries.empty());
+  EXPECT_EQ(a.transports.size(), 2u);
+}
+
+TEST(ContactDetector, ShortExcursionsAndBadFitsAreIgnored) {
+  PoseTracks t = make_tracks(80, {at(0, 0, 0.8)}, {});
+  for (int f = 30; f < 33; ++f) t.samples[0][f].pose.translation().x() += 0.06;  // a 3-frame glitch
+  for (auto& s : t.samples[0]) s.reprojection_px = 0.1;
+  for (int f = 50; f < 60; ++f) {  // a partly hidden marker: a pose far off, fitting badly
+    t.samples[0][f].pose.translation().z() += 0.2;
+    t.samples[0][f].reprojection_px = 1.2;
+  }
+  const ContactAnalysis a = detect_contacts(t);
+  EXPECT_TRUE(a.carries.empty());
+  EXPECT_TRUE(a.transports.empty());
+}
+
+TEST(ContactDetector, OneObjectAtATime) {
+  // Two parts "move" at once without keeping their relative pose: the farther one is carried.
+  const PoseTracks t = make_tracks(100, {at(0, 0, 0.8), at(0.3, 0, 0.8)},
+                                   {{0, 20, 60, at(0.0, 0.8, 1.3)}, {1, 30, 50, at(0.35, 0.0, 0.8)}});
+  const ContactAnalysis a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_EQ(a.carries[0].object, 0);
+  EXPECT_EQ(a.rejected.size(), 1u);
+}
+
+TEST(TrackSmoothing, NoLagAtTheEvents) {
+  const PoseTracks t = make_tracks(100, {at(0, 0, 0.8)}, {{0, 20, 60, at(0.5, 0.2, 0.8)}}, 0.001, 3);
+  const ContactAnalysis a = detect_contacts(t);
+  const PoseTracks s = smooth_tracks(t, a);
+  // Constant through each rest, right up to the event frames.
+  EXPECT_TRUE(s.samples[0][0].pose.isApprox(s.samples[0][a.carries[0].start].pose, 1e-12));
+  EXPECT_TRUE(s.samples[0][99].pose.isApprox(s.samples[0][a.carries[0].end].pose, 1e-12));
+  // Moving right after the grasp (a lagging filter would still be at the rest pose).
+  const Pose truth = carry_pose(at(0, 0, 0.8), at(0.5, 0.2, 0.8), 3.0 / 40);
+  EXPECT_LT((s.samples[0][23].pose.translation() - truth.translation()).norm(), 0.004);
+}

@@ -1,0 +1,142 @@
+// End to end on a short synthetic video: render shelf_0, extract, compare with the truth.
+// Also: the same with simulated pose-estimator and hand-detector outputs, determinism, and
+// clear errors for a corrupt video and a malformed detections file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "perception/camera/camera_model.h"
+#include "perception/events/evaluation.h"
+#include "perception/extraction/extract_demonstration.h"
+#include "perception/markers/marker_scene.h"
+#include "perception/synthetic/synthetic_video.h"
+#include "perception/video/video_reader.h"
+
+namespace fs = std::filesystem;
+using namespace demoplan;
+using namespace demoplan::perception;
+
+namespace {
+
+// One synthetic video for the whole suite: rendering takes a second or two.
+class Extraction : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("demoplan_extraction_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    SynthOptions o;
+    o.data_dir = DEMOPLAN_DATA_DIR;
+    o.task = "shelf_0";
+    o.robot = "panda";
+    o.detections = true;
+    out_ = write_synthetic_demonstration(o, (dir_ / "clean").string());
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+  static ExtractionResult extract(const ExtractionOptions& options = {}, const std::string& video = "") {
+    const MarkerScene scene = load_marker_scene(out_.scene);
+    return extract_demonstration(video.empty() ? out_.video : video, load_camera(out_.camera), scene, options);
+  }
+  static fs::path dir_;
+  static SynthOutput out_;
+};
+fs::path Extraction::dir_;
+SynthOutput Extraction::out_;
+
+void expect_matches_truth(const Demonstration& d, const Demonstration& truth, double max_mm, double max_deg) {
+  const DemonstrationEvaluation e = evaluate_demonstration(d, truth, 2);
+  EXPECT_EQ(e.matched, e.truth_events);
+  EXPECT_EQ(e.detected_events, e.truth_events);
+  EXPECT_LT(e.max_translation_error_mm, max_mm);
+  EXPECT_LT(e.max_rotation_error_deg, max_deg);
+  EXPECT_TRUE(validate(d).empty());
+}
+
+}  // namespace
+
+TEST_F(Extraction, RecoversEveryEventAndPose) {
+  const Demonstration truth = load_demonstration(out_.truth);
+  ASSERT_EQ(truth.events.size(), 2u);
+  const ExtractionResult r = extract();
+  EXPECT_EQ(r.frames, out_.frames);
+  EXPECT_EQ(r.extrinsics_source, "file");
+  expect_matches_truth(r.demonstration, truth, 5.0, 2.0);
+  for (size_t i = 0; i < truth.events.size() && i < r.demonstration.events.size(); ++i)
+    EXPECT_LE(std::abs(r.demonstration.events[i].frame - truth.events[i].frame), 2);
+  // Per-frame tracks for the UI: every frame of the part has a smoothed pose.
+  ASSERT_EQ(r.smoothed.samples.size(), 1u);
+  for (const auto& s : r.smoothed.samples[0]) EXPECT_TRUE(s.valid);
+}
+
+TEST_F(Extraction, CameraPoseFromTheBoard) {
+  ExtractionOptions o;
+  o.board_extrinsics = true;
+  const ExtractionResult r = extract(o);
+  EXPECT_NE(r.extrinsics_source.find("board"), std::string::npos);
+  const Pose truth = *load_camera(out_.camera).world_T_camera;
+  EXPECT_LT((r.world_T_camera.translation() - truth.translation()).norm(), 0.02);
+  expect_matches_truth(r.demonstration, load_demonstration(out_.truth), 20.0, 2.0);
+}
+
+TEST_F(Extraction, FromPoseEstimatesAndHandsOnly) {
+  // A scene without markers: poses come from the BOP file, timing from the hands.
+  MarkerScene scene = load_marker_scene(out_.scene);
+  for (auto& o : scene.objects) o.markers.clear();
+  ExtractionOptions o;
+  o.bop_csv = out_.bop_csv;
+  o.hands_json = out_.hands;
+  const ExtractionResult r = extract_demonstration(out_.video, load_camera(out_.camera), scene, o);
+  expect_matches_truth(r.demonstration, load_demonstration(out_.truth), 15.0, 3.0);
+}
+
+TEST_F(Extraction, SameSeedSameVideo) {
+  SynthOptions o;
+  o.data_dir = DEMOPLAN_DATA_DIR;
+  o.task = "shelf_0";
+  o.time_scale = 0.25;
+  o.noise_sigma = 5;
+  const auto a = write_synthetic_demonstration(o, (dir_ / "a").string());
+  const auto b = write_synthetic_demonstration(o, (dir_ / "b").string());
+  auto bytes = [](const std::string& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(a.truth), bytes(b.truth));
+  EXPECT_EQ(bytes(a.scene), bytes(b.scene));
+  VideoReader va(a.video), vb(b.video);
+  ASSERT_EQ(va.frame_count(), vb.frame_count());
+  EXPECT_EQ(cv::norm(va.frame(5), vb.frame(5), cv::NORM_INF), 0.0);
+}
+
+TEST_F(Extraction, CorruptVideoNamesTheFrame) {
+  // A Motion-JPEG AVI cut in the middle decodes up to the cut.
+  SynthOptions o;
+  o.data_dir = DEMOPLAN_DATA_DIR;
+  o.task = "shelf_0";
+  o.time_scale = 0.25;
+  o.fourcc = "MJPG";
+  const auto s = write_synthetic_demonstration(o, (dir_ / "corrupt").string());
+  fs::resize_file(s.video, fs::file_size(s.video) * 2 / 3);
+  try {
+    extract_demonstration(s.video, load_camera(s.camera), load_marker_scene(s.scene));
+    FAIL() << "a truncated video was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(s.video), std::string::npos) << what;
+    EXPECT_NE(what.find("frame "), std::string::npos) << what;
+  }
+}
+
+TEST_F(Extraction, MalformedDetectionsNameTheLine) {
+  const std::string bad = (dir_ / "bad.csv").string();
+  std::ofstream(bad) << "scene_id,im_id,obj_id,score,R,t,time\n0,0,2,0.9,1 0 0 0 1 0 0 0 1,0 0 500,-1\n0,1,2,0.9,1 0 0,0 0 500,-1\n";
+  ExtractionOptions o;
+  o.bop_csv = bad;
+  try {
+    extract(o);
+    FAIL() << "a malformed detections file was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.csv: line 3: R must hold 9 numbers"), std::string::npos) << e.what();
+  }
+}

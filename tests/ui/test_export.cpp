@@ -1,0 +1,98 @@
+// The export dialog: times a planned path within the robot's limits, shows the program and its
+// duration, saves it, and marks the Export step done; a format that does not fit the robot is
+// refused with the reason.
+#include <QComboBox>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "ui/document/document.h"
+#include "ui/document/program_export.h"
+#include "ui/widgets/export_dialog.h"
+#include "ui_test_support.h"
+
+using namespace demoplan;
+using namespace demoplan::ui;
+
+class TestExport : public QObject {
+  Q_OBJECT
+  QTemporaryDir dir_;
+  QString project_;
+
+private slots:
+  void initTestCase() {
+    // A project whose last result is a short path: the arm swings joint 1 out and back.
+    Document doc(test::dataDir().toStdString());
+    doc.open(test::sampleProject());
+    Path path;
+    path.task = "shelf_1";
+    path.robot = "panda";
+    path.robot_pose = 1;
+    for (const Joint* j : doc.scene().robot.model.configuration_joints()) path.joint_names.push_back(j->name);
+    path.object_ids = doc.demonstration().object_ids;
+    const Eigen::VectorXd q0 = doc.initialConfiguration();
+    for (double a : {0.0, 0.4, 0.0}) {
+      Waypoint w;
+      w.q = q0;
+      w.q[0] += a;
+      w.objects = doc.demonstration().events.front().poses;
+      w.state = 0;
+      w.state_name = "P0";
+      path.waypoints.push_back(w);
+    }
+    const QString path_file = dir_.filePath(QStringLiteral("swing.path.json"));
+    save_path(path_file.toStdString(), path);
+    Project p = doc.project();
+    ResultSummary r;
+    r.path = path_file.toStdString();
+    r.solved = r.valid = true;
+    r.message = "ok";
+    r.demonstration_digest = demonstration_digest(p.demonstration);
+    p.result = r;
+    project_ = dir_.filePath(QStringLiteral("swing.demoplan"));
+    save_project(project_.toStdString(), p);
+  }
+
+  void fileNamesFitTheFormats() {
+    QCOMPARE(program_file_name("krl", "shelf 1"), std::string("SHELF_1.src"));
+    QCOMPARE(program_file_name("sunrise", "shelf_1_panda"), std::string("Shelf1Panda.java"));
+    QCOMPARE(program_file_name("csv", "2job"), std::string("job_2job.csv"));
+  }
+
+  void previewsAndSaves() {
+    Document doc(test::dataDir().toStdString());
+    doc.open(project_);
+    QVERIFY(doc.result() && doc.result()->path);
+    ExportDialog dialog(&doc, /*interactive=*/false);
+    QCOMPARE(dialog.formatBox()->currentData().toString(), QStringLiteral("franka"));
+    QVERIFY2(dialog.last().ok, dialog.last().error.c_str());
+    QVERIFY(dialog.last().duration_s > 0.1);
+    QVERIFY(dialog.last().check_ok);
+    QVERIFY(!dialog.last().limits.empty());
+    QVERIFY(dialog.summary()->text().contains(QStringLiteral("Duration")));
+    QVERIFY(dialog.preview()->toPlainText().size() > 200);
+    // CSV: one row per sample, the arm's joints.
+    dialog.formatBox()->setCurrentIndex(dialog.formatBox()->findData(QStringLiteral("csv")));
+    QVERIFY(dialog.last().ok);
+    QVERIFY(dialog.preview()->toPlainText().contains(QStringLiteral("panda_joint1")));
+    const QString out = dir_.filePath(QStringLiteral("swing.csv"));
+    QVERIFY(dialog.saveTo(out));
+    QVERIFY(QFileInfo(out).size() > 200);
+    QCOMPARE(doc.stepState(Step::Export).status, StepStatus::Ok);
+  }
+
+  void refusesAFormatThatDoesNotFitTheRobot() {
+    Document doc(test::dataDir().toStdString());
+    doc.open(project_);
+    ExportDialog dialog(&doc, false);
+    dialog.formatBox()->setCurrentIndex(dialog.formatBox()->findData(QStringLiteral("urscript")));
+    QVERIFY(!dialog.last().ok);
+    QVERIFY2(dialog.summary()->text().contains(QStringLiteral("6-axis")), qPrintable(dialog.summary()->text()));
+    QVERIFY(!dialog.saveTo(dir_.filePath(QStringLiteral("x.script"))));
+    QVERIFY(!QFileInfo::exists(dir_.filePath(QStringLiteral("x.script"))));
+  }
+};
+
+DEMOPLAN_UI_TEST_MAIN(TestExport)
+#include "test_export.moc"

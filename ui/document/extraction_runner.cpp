@@ -1,0 +1,108 @@
+#include "ui/document/extraction_runner.h"
+
+#include <QMetaObject>
+#include <QPointer>
+
+#include "core/error.h"
+#include "perception/camera/camera_model.h"
+#include "perception/extraction/extract_demonstration.h"
+#include "perception/markers/marker_scene.h"
+
+namespace demoplan::ui {
+
+Demonstration reorder_objects(const Demonstration& demo, const std::vector<std::string>& ids, const std::string& source) {
+  std::vector<int> from(ids.size(), -1);  // new index -> old index
+  std::vector<int> to(demo.object_ids.size(), -1);
+  for (size_t i = 0; i < ids.size(); ++i) {
+    from[i] = demo.object_index(ids[i]);
+    if (from[i] < 0) throw InputError(source, "objects", "the video's marker scene does not track the part " + ids[i]);
+    to[from[i]] = int(i);
+  }
+  Demonstration out;
+  out.task = demo.task;
+  out.fps = demo.fps;
+  out.object_ids = ids;
+  for (const ContactEvent& e : demo.events) {
+    if (e.object < 0 || to[e.object] < 0) continue;  // a part the scene does not plan for (a tray)
+    ContactEvent n = e;
+    n.object = to[e.object];
+    n.poses.clear();
+    n.pose_frames.clear();
+    for (size_t i = 0; i < ids.size(); ++i) {
+      n.poses.push_back(e.poses[from[i]]);
+      if (!e.pose_frames.empty()) n.pose_frames.push_back(e.pose_frames[from[i]]);
+    }
+    out.events.push_back(std::move(n));
+  }
+  return out;
+}
+
+ExtractionRunner::ExtractionRunner(QObject* parent) : QObject(parent) {}
+
+ExtractionRunner::~ExtractionRunner() {
+  if (cancel_) cancel_->store(true);
+  for (auto& t : threads_)
+    if (t.joinable()) t.join();
+}
+
+bool ExtractionRunner::start(ExtractionJob job) {
+  if (running_) return false;
+  running_ = true;
+  const int generation = ++generation_;
+  cancel_ = std::make_shared<std::atomic<bool>>(false);
+  auto cancel = cancel_;
+  QPointer<ExtractionRunner> self(this);
+  emit started();
+  threads_.emplace_back([self, generation, cancel, job = std::move(job)] {
+    auto post = [&](auto f) {
+      if (cancel->load() || !self) return;
+      QMetaObject::invokeMethod(
+          self.data(),
+          [self, generation, f = std::move(f)]() mutable {
+            if (self && self->generation_ == generation && self->running_) f(*self);
+          },
+          Qt::QueuedConnection);
+    };
+    auto outcome = std::make_shared<ExtractionOutcome>();
+    try {
+      const perception::MarkerScene scene = perception::load_marker_scene(job.markers);
+      const perception::Camera camera = perception::load_camera(job.camera);
+      perception::ExtractionOptions options;
+      options.camera_source = job.camera;
+      options.cancel = cancel.get();
+      int last_percent = -1;
+      options.progress = [&](int done, int total) {
+        const int percent = total > 0 ? done * 100 / total : 0;
+        if (percent == last_percent) return;
+        last_percent = percent;
+        post([done, total](ExtractionRunner& r) { emit r.progress(done, total); });
+      };
+      const perception::ExtractionResult r = perception::extract_demonstration(job.video, camera, scene, options);
+      if (!r.cancelled) {
+        outcome->demonstration = reorder_objects(r.demonstration, job.object_ids, job.markers);
+        outcome->demonstration.task = job.task;
+        outcome->warnings = r.warnings;
+        outcome->frames = r.frames;
+        outcome->seconds = r.seconds;
+        outcome->ok = true;
+      }
+    } catch (const std::exception& e) {
+      outcome->error = e.what();
+    }
+    post([outcome](ExtractionRunner& r) {
+      r.running_ = false;
+      emit r.finished(*outcome);
+    });
+  });
+  return true;
+}
+
+void ExtractionRunner::cancel() {
+  if (!running_) return;
+  cancel_->store(true);
+  running_ = false;
+  ++generation_;
+  emit cancelled();
+}
+
+}  // namespace demoplan::ui

@@ -1,0 +1,58 @@
+#pragma once
+// Finds the grasp and release events and the parts' poses in the video (perception's
+// extract_demonstration) on a background thread, with progress and cancel. The result is a
+// demonstration in the scene's object order, ready to replace the current one as one undoable
+// edit.
+#include <QObject>
+#include <atomic>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/demo/demonstration.h"
+
+namespace demoplan::ui {
+
+struct ExtractionJob {
+  std::string video, camera, markers;  // files
+  std::vector<std::string> object_ids;  // the scene's parts, in its order
+  std::string task;
+};
+
+struct ExtractionOutcome {
+  bool ok = false;
+  std::string error;
+  Demonstration demonstration;
+  std::vector<std::string> warnings;
+  int frames = 0;
+  double seconds = 0.0;
+};
+
+class ExtractionRunner : public QObject {
+  Q_OBJECT
+public:
+  explicit ExtractionRunner(QObject* parent = nullptr);
+  ~ExtractionRunner() override;
+  bool start(ExtractionJob job);
+  void cancel();
+  bool isRunning() const { return running_; }
+
+signals:
+  void started();
+  void progress(int done, int total);
+  void finished(const ExtractionOutcome& outcome);
+  void cancelled();
+
+private:
+  bool running_ = false;
+  int generation_ = 0;
+  std::shared_ptr<std::atomic<bool>> cancel_;
+  std::vector<std::thread> threads_;
+};
+
+// Puts an extracted demonstration's objects in `ids`' order; throws InputError naming the part
+// the extraction does not track.
+Demonstration reorder_objects(const Demonstration& demo, const std::vector<std::string>& ids, const std::string& source);
+
+}  // namespace demoplan::ui

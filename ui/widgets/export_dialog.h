@@ -1,0 +1,46 @@
+#pragma once
+// Export: pick the controller's format, see the program text, its duration and the limits it
+// keeps, and save it. The path is timed within the robot's joint limits and checked
+// independently before anything is written (core/trajectory, core/export).
+#include <QDialog>
+
+#include "ui/document/document.h"
+#include "ui/document/program_export.h"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPlainTextEdit;
+class QPushButton;
+class QSpinBox;
+
+namespace demoplan::ui {
+
+class ExportDialog : public QDialog {
+  Q_OBJECT
+public:
+  ExportDialog(Document* doc, bool interactive, QWidget* parent = nullptr);
+  QComboBox* formatBox() const { return format_; }
+  QPlainTextEdit* preview() const { return preview_; }
+  QLabel* summary() const { return summary_; }
+  const ProgramExport& last() const { return last_; }
+  // Writes the program to `file` (asks where when empty and interactive); true when written.
+  bool saveTo(const QString& file = QString());
+  void refreshPreview();
+
+private:
+  ProgramSettings settings() const;
+  Document* doc_;
+  bool interactive_;
+  QComboBox* format_;
+  QDoubleSpinBox* velocity_;
+  QDoubleSpinBox* acceleration_;
+  QDoubleSpinBox* rate_;
+  QSpinBox* output_;
+  QLabel* summary_;
+  QPlainTextEdit* preview_;
+  QPushButton* save_;
+  ProgramExport last_;
+};
+
+}  // namespace demoplan::ui
