@@ -86,12 +86,14 @@ Peaks peaks(StateAt state_at, const Eigen::VectorXd& V, const Eigen::VectorXd& A
 
 // One blend piece at unit corner speed: its duration and the highest corner speed its peaks allow
 // (velocity scales with the speed, acceleration with its square, jerk with its cube).
-std::pair<double, double> blend_piece(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, const Eigen::VectorXd& q1,
+// The displacement dq is given rather than taken as a difference of positions: a joint that barely
+// moves would otherwise round to a zero displacement with a nonzero end velocity.
+std::pair<double, double> blend_piece(const Eigen::VectorXd& q0, const Eigen::VectorXd& dq, const Eigen::VectorXd& v0,
                                       const Eigen::VectorXd& v1, const Eigen::VectorXd& V, const Eigen::VectorXd& A,
                                       const Eigen::VectorXd& J) {
-  const double h = monotone_duration(q1 - q0, v0, v1);
+  const double h = monotone_duration(dq, v0, v1);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(q0.size());
-  const Knot from{q0, v0, zero}, to{q1, v1, zero};
+  const Knot from{q0, v0, zero}, to{q0 + dq, v1, zero};
   const Peaks p = peaks([&](double s) { return quintic_hermite(from, to, h, s); }, V, A, J, 64);
   const double speed = std::min({1 / p.v, 1 / std::sqrt(p.a), 1 / std::cbrt(p.j)});
   return {h, speed};
@@ -159,8 +161,8 @@ Trajectory time_parameterize(const Path& path, const JointLimitSet& limits, cons
     c.blend = true;
     c.before = std::min(o.blend_length, in.length / 3);
     c.after = std::min(o.blend_length, out.length / 3);
-    const auto [h_in, s_in] = blend_piece(W[k].q - c.before * in.u, in.u, W[k].q, c.w, V, A, J);
-    const auto [h_out, s_out] = blend_piece(W[k].q, c.w, W[k].q + c.after * out.u, out.u, V, A, J);
+    const auto [h_in, s_in] = blend_piece(W[k].q - c.before * in.u, c.before * in.u, in.u, c.w, V, A, J);
+    const auto [h_out, s_out] = blend_piece(W[k].q, c.after * out.u, c.w, out.u, V, A, J);
     c.piece_in = h_in, c.piece_out = h_out;
     c.max_speed = std::min({s_in, s_out, in.line.velocity, out.line.velocity});
   }

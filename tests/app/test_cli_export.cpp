@@ -108,6 +108,30 @@ TEST_F(CliExport, EveryFormatWritesItsFilesAndReports) {
   EXPECT_TRUE(fs::exists(root_ / "pick.dat"));
 }
 
+// A path the planner produced (shortened, with repeated configurations at the grasps) exports in
+// the formats of both fixed-base robots and passes the checker.
+TEST_F(CliExport, PlannedPathExports) {
+  for (const std::string robot : {"panda", "ur5"}) {
+    SCOPED_TRACE(robot);
+    const std::string planned = (root_ / ("planned_" + robot + ".json")).string();
+    const Result p = run({"plan", "--task", "shelf_1", "--robot", robot, "--pose", "1", "--seed", "1", "--time-limit",
+                          "60", "--out", planned, "--json", "--data-dir", DEMOPLAN_DATA_DIR});
+    ASSERT_EQ(p.code, 0) << p.err;
+    ASSERT_TRUE(Json::parse(p.out)["valid"].get<bool>()) << p.out;
+    for (const std::string format : {"csv", robot == "panda" ? "franka" : "urscript"}) {
+      SCOPED_TRACE(format);
+      const Result r = run({"export", planned, "--robot", robot, "--format", format, "--out",
+                            (root_ / ("planned_" + robot + "." + format)).string(), "--json", "--data-dir",
+                            DEMOPLAN_DATA_DIR});
+      ASSERT_EQ(r.code, 0) << r.err;
+      const Json j = Json::parse(r.out);
+      EXPECT_TRUE(j["check_ok"].get<bool>()) << r.out;
+      EXPECT_LE(j["peak_velocity_ratio"].get<double>(), 1.0);
+      EXPECT_LE(j["peak_acceleration_ratio"].get<double>(), 1.0);
+    }
+  }
+}
+
 TEST_F(CliExport, PathBeyondAJointLimit) {
   Json path = Json::parse(read_text(root_ / "panda.json"));
   path["waypoints"][3]["q"][1] = 1.9;

@@ -280,5 +280,25 @@ TEST(TimeParameterization, BlendsPassExactlyAndMonotonically) {
     }
 }
 
+// A corner where one joint barely moves on both sides (as shortened paths have them): its share
+// of a blend piece rounds away against its position, yet the piece must keep a positive duration.
+TEST(TimeParameterization, CornerWithABarelyMovingJoint) {
+  const JointLimitSet l = trajectory_limits(benchmark_case("shelf_1", "panda").scene.robot.model);
+  Path p;
+  p.joint_names = l.names;
+  const Eigen::VectorXd q0 = (l.lower + l.upper) / 2;
+  Eigen::VectorXd step = Eigen::VectorXd::Zero(l.size()), turn = step;
+  step[0] = 0.4, step[1] = 0.2;
+  turn[0] = 0.3, turn[1] = 0.25;
+  Eigen::VectorXd q1 = q0 + step, q2 = q1 + turn;
+  q1[3] = std::nextafter(q0[3], 10.0);  // one ulp on either side of the corner
+  q2[3] = std::nextafter(q1[3], 10.0);
+  for (const auto& q : {q0, q1, q2}) p.waypoints.push_back({q, {}, 0, "P0", GripperAction::None, -1, false});
+  const Trajectory tr = time_parameterize(p, l);
+  EXPECT_FALSE(tr.stops[1]);
+  const CheckReport r = check_trajectory(tr.sample(500.0), p, l);
+  EXPECT_TRUE(r.ok) << (r.violations.empty() ? "" : r.violations.front());
+}
+
 }  // namespace
 }  // namespace demoplan
