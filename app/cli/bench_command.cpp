@@ -20,6 +20,7 @@
 #include "core/demo/benchmark_demonstration.h"
 #include "core/error.h"
 #include "core/io/json_file.h"
+#include "core/graph/pick_feasibility.h"
 #include "core/planning/solve.h"
 
 namespace demoplan::cli {
@@ -88,7 +89,13 @@ struct Instance {
   std::unique_ptr<ConstraintGraph> graph;
   std::unique_ptr<CollisionChecker> checker;
   ValidationTask vtask;
+  // After the first failed run: can every pick be done from this base pose at all?
+  std::once_flag assessed;
+  bool infeasible = false;
+  std::string infeasible_reason;
 };
+
+constexpr int kFeasibilitySamples = 100;  // per transition
 
 double median(std::vector<double> v) {
   if (v.empty()) return std::nan("");
@@ -148,8 +155,11 @@ int run_bench(const BenchOptions& o) {
         in->checker = std::make_unique<CollisionChecker>(in->scene);
         in->vtask = o.from == "raw" ? validation_task(in->demo, in->scene) : validation_task(task, in->scene);
         instances[{task_name, robot, pose}] = std::move(in);
-        for (int seed : seeds)
-          runs.push_back({task_name, robot, pose, seed, task.task_name == "waiter" ? o.waiter_time_limit : o.time_limit});
+        for (int seed : seeds) {
+          Run& r = runs.emplace_back();
+          r.task = task_name, r.robot = robot, r.pose = pose, r.seed = seed;
+          r.time_limit = task.task_name == "waiter" ? o.waiter_time_limit : o.time_limit;
+        }
       }
     }
   }
@@ -165,7 +175,7 @@ int run_bench(const BenchOptions& o) {
         i = next++;
       }
       Run& r = runs[i];
-      const Instance& in = *instances.at({r.task, r.robot, r.pose});
+      Instance& in = *instances.at({r.task, r.robot, r.pose});
       SolveParams sp;
       sp.planner.seed = static_cast<std::uint64_t>(r.seed);
       sp.planner.time_limit = r.time_limit;
@@ -177,6 +187,12 @@ int run_bench(const BenchOptions& o) {
       r.trees = s.plan.trees;
       r.nodes = s.plan.nodes;
       r.message = s.plan.message;
+      if (!r.solved)
+        std::call_once(in.assessed, [&] {
+          const FeasibilityReport f = assess_picks(in.scene, *in.graph, *in.checker, kFeasibilitySamples);
+          in.infeasible = !f.feasible();
+          in.infeasible_reason = f.summary(in.scene);
+        });
       if (r.solved) {
         r.raw = s.validation;
         Path shorter = s.plan.path;
@@ -193,6 +209,7 @@ int run_bench(const BenchOptions& o) {
                 << " seed " << r.seed << ": "
                 << (r.solved ? (r.raw.valid ? "valid" : "INVALID (" + r.raw.message + ")") : "not solved (" + r.message + ")")
                 << ", " << std::fixed << std::setprecision(2) << r.time_s << " s\n" << std::defaultfloat;
+      if (!r.solved && in.infeasible) std::cerr << "    infeasible: " << in.infeasible_reason;
     }
   };
   std::vector<std::thread> pool;
@@ -205,13 +222,15 @@ int run_bench(const BenchOptions& o) {
   std::map<std::pair<std::string, std::string>, std::vector<const Run*>> groups;
   for (const Run& r : runs) groups[{r.task, r.robot}].push_back(&r);
   std::cerr << "\n" << std::left << std::setw(10) << "task" << std::setw(10) << "robot" << std::setw(17) << "planner"
-            << std::right << std::setw(6) << "runs" << std::setw(9) << "success" << std::setw(10) << "median s"
+            << std::right << std::setw(6) << "runs" << std::setw(9) << "feasible" << std::setw(9) << "success"
+            << std::setw(10) << "of feas." << std::setw(10) << "median s"
             << std::setw(9) << "mean s" << std::setw(12) << "length rad" << std::setw(8) << "grasps" << "\n";
   for (const auto& [key, group] : groups) {
     for (int planner = 0; planner < 2; ++planner) {
       std::vector<double> times, lengths, grasps;
-      int solved = 0;
+      int solved = 0, feasible = 0;
       for (const Run* r : group) {
+        if (!instances.at({r->task, r->robot, r->pose})->infeasible) ++feasible;
         const ValidationReport& v = planner == 0 ? r->raw : r->shortened;
         if (!r->solved || !v.valid) continue;  // success = solved and valid
         ++solved;
@@ -221,13 +240,15 @@ int run_bench(const BenchOptions& o) {
       }
       const std::string name = planner == 0 ? "guided" : "guided+shortcut";
       const double rate = static_cast<double>(solved) / static_cast<double>(group.size());
+      const double feasible_rate = feasible ? static_cast<double>(solved) / feasible : std::nan("");
       rows.push_back({{"task", key.first}, {"robot", key.second}, {"planner", name},
                       {"runs", group.size()}, {"solved", solved}, {"success_rate", rate},
+                      {"feasible_runs", feasible}, {"success_rate_feasible", feasible_rate},
                       {"median_time_s", median(times)}, {"mean_time_s", mean(times)},
                       {"median_path_length_rad", median(lengths)}, {"mean_grasps", mean(grasps)}});
       std::cerr << std::left << std::setw(10) << key.first << std::setw(10) << key.second << std::setw(17) << name
-                << std::right << std::fixed << std::setprecision(2) << std::setw(6) << group.size() << std::setw(8)
-                << rate * 100 << "%" << std::setw(10) << median(times) << std::setw(9) << mean(times) << std::setw(12)
+                << std::right << std::fixed << std::setprecision(2) << std::setw(6) << group.size() << std::setw(9)
+                << feasible << std::setw(8) << rate * 100 << "%" << std::setw(9) << feasible_rate * 100 << "%" << std::setw(10) << median(times) << std::setw(9) << mean(times) << std::setw(12)
                 << median(lengths) << std::setw(8) << mean(grasps) << "\n" << std::defaultfloat;
     }
   }
@@ -237,6 +258,7 @@ int run_bench(const BenchOptions& o) {
     for (const Run& r : runs)
       all.push_back({{"task", r.task}, {"robot", r.robot}, {"pose", r.pose}, {"seed", r.seed}, {"solved", r.solved},
                      {"valid", r.solved && r.raw.valid}, {"message", r.solved ? r.raw.message : r.message},
+                     {"feasible", !instances.at({r.task, r.robot, r.pose})->infeasible},
                      {"planning_time_s", r.time_s}, {"iterations", r.iterations}, {"trees", r.trees},
                      {"nodes", r.nodes}, {"path_length_rad", r.raw.length.robot},
                      {"shortened_path_length_rad", r.shortened.length.robot}, {"grasps", r.raw.grasps}});

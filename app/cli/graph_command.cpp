@@ -10,8 +10,7 @@
 #include "app/cli/task_inputs.h"
 #include "core/demo/benchmark_demonstration.h"
 #include "core/graph/graph_description.h"
-#include "core/graph/projector.h"
-#include "core/graph/state_validity.h"
+#include "core/graph/pick_feasibility.h"
 
 namespace demoplan::cli {
 
@@ -27,36 +26,12 @@ struct GraphOptions {
 int run_graph(const GraphOptions& o) {
   const LoadedTask t = load_task_inputs(o.inputs);
   const ConstraintGraph graph = build_constraint_graph(t.scene, t.demo);
-  const ConstraintProjector projector(t.scene, graph);
   const CollisionChecker checker(t.scene);
-  const StateValidity validity(t.scene, graph, checker);
-  auto data = checker.make_data();
-  std::mt19937_64 rng(o.seed);
-
-  struct Stats {
-    int projected = 0, collision_free = 0;
-    std::map<std::string, int> failures;
-  };
-  std::vector<Stats> stats(graph.transitions.size());
-  double projection_time = 0.0;
+  const FeasibilityReport report = assess_picks(t.scene, graph, checker, o.samples, o.seed);
+  const auto& stats = report.transitions;
   int total_projected = 0, total_free = 0;
-  for (size_t i = 0; i < graph.transitions.size(); ++i) {
-    for (int k = 0; k < o.samples; ++k) {
-      const auto t0 = std::chrono::steady_clock::now();
-      const TransitionSample s = projector.sample_on_transition(static_cast<int>(i), rng);
-      projection_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (!s.ok) {
-        ++stats[i].failures[s.failure.substr(0, s.failure.find(" ("))];
-        continue;
-      }
-      ++stats[i].projected;
-      CollisionPair hit;
-      if (validity.transition_free(s, data, &hit)) ++stats[i].collision_free;
-      else ++stats[i].failures["in collision: " + hit.first + " / " + hit.second];
-    }
-    total_projected += stats[i].projected;
-    total_free += stats[i].collision_free;
-  }
+  for (const auto& st : stats) total_projected += st.projected, total_free += st.collision_free;
+  const double projection_time = report.projection_seconds;
   const int total = o.samples * static_cast<int>(graph.transitions.size());
   const double success_rate = total ? static_cast<double>(total_projected) / total : 0.0;
   const double per_second = projection_time > 0 ? total_projected / projection_time : 0.0;
@@ -84,6 +59,9 @@ int run_graph(const GraphOptions& o) {
   }
   std::cerr << "projection success " << success_rate * 100 << " %, " << static_cast<long>(per_second)
             << " successful projections/s, collision-free " << total_free << "/" << total << "\n";
+  for (const auto& p : report.picks)
+    std::cerr << "pick " << p.pick + 1 << " (" << t.scene.objects[p.object].id << "): "
+              << (p.feasible() ? "feasible with " + std::to_string(p.handles.size()) + " handle(s)" : p.reason) << "\n";
 
   bool every_transition_free = true;
   for (const auto& s : stats) every_transition_free &= s.collision_free > 0;
@@ -110,6 +88,7 @@ int run_graph(const GraphOptions& o) {
                                 {"projection_success_rate", success_rate},
                                 {"projections_per_second", per_second},
                                 {"collision_free_rate", total ? static_cast<double>(total_free) / total : 0.0},
+                                {"picks", describe_picks(t.scene, report)},
                                 {"deviation_from_subgoals", deviation}}
                      .dump()
               << std::endl;

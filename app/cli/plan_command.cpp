@@ -7,11 +7,14 @@
 
 #include "app/cli/command.h"
 #include "app/cli/task_inputs.h"
+#include "core/graph/graph_description.h"
 #include "core/planning/solve.h"
 
 namespace demoplan::cli {
 
 namespace {
+
+constexpr int kFeasibilitySamples = 100;  // per transition, after a failed plan
 
 struct PlanOptions {
   TaskInputs inputs;
@@ -51,6 +54,12 @@ int run_plan(const PlanOptions& o) {
       std::cerr << "  transitions never sampled collision-free: " << r.unsampled_transitions.size() << " of "
                 << graph.transitions.size() << "\n";
     }
+    // Say whether the demonstration can be done at all from this base pose, and if not, why.
+    const FeasibilityReport feasibility = assess_picks(t.scene, graph, checker, kFeasibilitySamples, o.params.seed);
+    j["picks"] = describe_picks(t.scene, feasibility);
+    j["feasible"] = feasibility.feasible();
+    std::cerr << (feasibility.feasible() ? "  every pick has a handle that grasps and releases collision-free\n"
+                                         : "  " + feasibility.summary(t.scene));
     if (o.json) std::cout << j.dump() << std::endl;
     return kFailed;
   }

@@ -79,4 +79,15 @@ std::string describe_graph_text(const Scene& scene, const ConstraintGraph& g) {
   return s.str();
 }
 
+nlohmann::json describe_picks(const Scene& scene, const FeasibilityReport& report) {
+  nlohmann::json picks = nlohmann::json::array();
+  for (const auto& p : report.picks)
+    picks.push_back({{"pick", p.pick + 1},
+                     {"object", scene.objects[p.object].id},
+                     {"feasible", p.feasible()},
+                     {"handles", p.handles},
+                     {"reason", p.reason}});
+  return picks;
+}
+
 }  // namespace demoplan

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/graph/constraint_graph.h"
+#include "core/graph/pick_feasibility.h"
 
 namespace demoplan {
 
@@ -15,5 +16,8 @@ nlohmann::json describe_graph(const Scene& scene, const ConstraintGraph& graph);
 
 // The same as indented text, one state or transition a line.
 std::string describe_graph_text(const Scene& scene, const ConstraintGraph& graph);
+
+// [{"pick", "object", "feasible", "handles", "reason"}]: which picks can be done, and why not.
+nlohmann::json describe_picks(const Scene& scene, const FeasibilityReport& report);
 
 }  // namespace demoplan

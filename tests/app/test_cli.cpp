@@ -1,57 +1,17 @@
 // The CLI as a user runs it: the real demoplan-cli binary, its exit codes, its one JSON object
 // on stdout, and its one-line errors on stderr.
 #include <gtest/gtest.h>
-#include <stdlib.h>
-#include <sys/wait.h>
 
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
-#include <string>
-#include <vector>
+
+#include "tests/app/cli_runner.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-void write_text(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary | std::ios::trunc);
-  out << text;
-  if (!out) throw std::runtime_error("test setup: cannot write " + p.string());
-}
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::vector<std::string> lines(const std::string& s) {
-  std::vector<std::string> out;
-  std::istringstream in(s);
-  for (std::string l; std::getline(in, l);) out.push_back(l);
-  return out;
-}
-
-fs::path make_temp_dir(const std::string& prefix) {
-  std::string tmpl = (fs::temp_directory_path() / (prefix + "XXXXXX")).string();
-  if (!mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed");
-  return tmpl;
-}
-
-struct Result {
-  int code = -1;  // exit status; -1 when the process did not exit normally (crash)
-  std::string out, err;
-};
+using namespace demoplan::testing_support;
+using Result = CliResult;
 
 class Cli : public ::testing::Test {
 protected:
@@ -68,18 +28,8 @@ protected:
     }
   }
 
-  // Runs demoplan-cli with `args`; `env` is prepended to the command ("NAME=value ").
   Result run(const std::vector<std::string>& args, const std::string& env = "") const {
-    std::string cmd = env + shell_quote(DEMOPLAN_CLI);
-    for (const auto& a : args) cmd += " " + shell_quote(a);
-    const fs::path out = work_ / "stdout", err = work_ / "stderr";
-    cmd += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
-    const int status = std::system(cmd.c_str());
-    Result r;
-    r.code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
-    r.out = read_text(out);
-    r.err = read_text(err);
-    return r;
+    return run_cli(args, work_, env);
   }
 
   static std::vector<std::string> check_args(const std::string& task, const std::string& robot,

@@ -1,46 +1,21 @@
 // demoplan-cli export as a user runs it: a path saved from real configurations of a benchmark
 // scene, every format, the one JSON object on stdout, and one-line errors with exit 2.
 #include <gtest/gtest.h>
-#include <stdlib.h>
-#include <sys/wait.h>
 
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
-#include <sstream>
 
+#include "tests/app/cli_runner.h"
 #include "tests/core/transition_path.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
+using namespace demoplan::testing_support;
+using Result = CliResult;
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-size_t line_count(const std::string& s) {
-  size_t n = 0;
-  std::istringstream in(s);
-  for (std::string l; std::getline(in, l);) ++n;
-  return n;
-}
-
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
+size_t line_count(const std::string& s) { return lines(s).size(); }
 
 class CliExport : public ::testing::Test {
 protected:
@@ -53,14 +28,7 @@ protected:
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
 
-  Result run(const std::vector<std::string>& args) const {
-    std::string cmd = shell_quote(DEMOPLAN_CLI);
-    for (const auto& a : args) cmd += " " + shell_quote(a);
-    const fs::path out = root_ / "stdout", err = root_ / "stderr";
-    cmd += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
-    const int status = std::system(cmd.c_str());
-    return {(status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
-  }
+  Result run(const std::vector<std::string>& args) const { return run_cli(args, root_); }
   static std::vector<std::string> args(const std::string& robot, const std::string& format, const std::string& out) {
     return {"export", (root_ / (robot + ".json")).string(), "--robot", robot, "--format", format, "--out",
             (root_ / out).string(), "--json", "--data-dir", DEMOPLAN_DATA_DIR};

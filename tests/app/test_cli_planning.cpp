@@ -1,0 +1,117 @@
+// plan, validate and bench as a user runs them: the JSON keys the issue lists, the path file
+// that validate reads back, the validator's verdict on a path broken by hand, the reason a
+// demonstration cannot be done from a base pose, and the benchmark table with OMPL logs.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/app/cli_runner.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+using namespace demoplan::testing_support;
+
+class CliPlanning : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() { dir_ = make_temp_dir("demoplan_test_cli_planning_"); }
+  static void TearDownTestSuite() {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  static CliResult run(std::vector<std::string> args) {
+    args.insert(args.end(), {"--data-dir", DEMOPLAN_DATA_DIR});
+    return run_cli(args, dir_);
+  }
+  static Json one_object(const CliResult& r) {
+    EXPECT_EQ(lines(r.out).size(), 1u) << r.out;
+    return Json::parse(r.out);
+  }
+  // shelf_0 (one object) from Panda pose 1, planned once and shared.
+  static const fs::path& planned() {
+    static const fs::path file = [] {
+      const fs::path f = dir_ / "shelf_0.json";
+      const CliResult r = run({"plan", "--task", "shelf_0", "--robot", "panda", "--pose", "1", "--seed", "1",
+                               "--time-limit", "60", "--out", f.string(), "--json"});
+      EXPECT_EQ(r.code, 0) << r.err;
+      return f;
+    }();
+    return file;
+  }
+  static inline fs::path dir_;
+};
+
+TEST_F(CliPlanning, PlanPrintsTheIssuesKeysAndAValidPath) {
+  const CliResult r = run({"plan", "--task", "shelf_0", "--robot", "panda", "--pose", "1", "--seed", "2",
+                           "--time-limit", "60", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = one_object(r);
+  for (const char* key : {"solved", "planning_time_s", "iterations", "trees", "nodes", "valid", "validation_message",
+                          "path_length", "grasps"})
+    EXPECT_TRUE(j.contains(key)) << key << " in " << r.out;
+  EXPECT_TRUE(j["solved"].get<bool>());
+  EXPECT_TRUE(j["valid"].get<bool>()) << j["validation_message"];
+  EXPECT_EQ(j["grasps"].get<int>(), 1);
+  for (const char* key : {"robot_rad", "object_m", "object_rad"}) EXPECT_GT(j["path_length"][key].get<double>(), 0.0);
+  // The object travels at least from its start to its goal (the straight-line distance).
+  EXPECT_GT(j["path_length"]["object_m"].get<double>(), 0.2);
+}
+
+TEST_F(CliPlanning, ValidateReadsThePlannedPathBack) {
+  const CliResult r = run({"validate", planned().string(), "--task", "shelf_0", "--robot", "panda", "--pose", "1",
+                           "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = one_object(r);
+  for (const char* key : {"valid", "message", "path_length", "grasps"}) EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_TRUE(j["valid"].get<bool>()) << j["message"];
+}
+
+TEST_F(CliPlanning, ValidateRejectsAPathMovedOffItsStart) {
+  Json path = Json::parse(read_text(planned()));
+  ASSERT_TRUE(path.contains("waypoints")) << "path file layout changed";
+  auto& q = path["waypoints"][0]["q"];
+  q[0] = q[0].get<double>() + 0.3;  // the robot no longer starts at its initial configuration
+  const fs::path broken = dir_ / "broken.json";
+  write_text(broken, path.dump());
+  const CliResult r = run({"validate", broken.string(), "--task", "shelf_0", "--robot", "panda", "--pose", "1",
+                           "--json"});
+  EXPECT_EQ(r.code, 1) << r.err;
+  const Json j = one_object(r);
+  EXPECT_FALSE(j["valid"].get<bool>());
+  EXPECT_NE(j["message"].get<std::string>().find("start"), std::string::npos) << j["message"];
+}
+
+TEST_F(CliPlanning, PlanSaysWhichPickCannotBeDone) {
+  const CliResult r = run({"plan", "--task", "shelf_2", "--robot", "panda", "--pose", "0", "--seed", "1",
+                           "--time-limit", "1", "--json"});
+  EXPECT_EQ(r.code, 1) << r.err;
+  const Json j = one_object(r);
+  EXPECT_FALSE(j["solved"].get<bool>());
+  EXPECT_FALSE(j["feasible"].get<bool>());
+  ASSERT_EQ(j["picks"].size(), 3u);
+  EXPECT_FALSE(j["picks"][1]["feasible"].get<bool>());
+  EXPECT_EQ(j["picks"][1]["object"], "YCBV_05");
+  EXPECT_NE(r.err.find("pick 2 (YCBV_05) cannot be done"), std::string::npos) << r.err;
+}
+
+TEST_F(CliPlanning, BenchPrintsRowsAndWritesOmplLogs) {
+  const fs::path log = dir_ / "bench.log";
+  const CliResult r = run({"bench", "--tasks", "shelf_0", "--robots", "panda", "--poses", "1", "--seeds", "1-2",
+                           "--time-limit", "60", "--json", "--ompl-log", log.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = one_object(r);
+  ASSERT_EQ(j["rows"].size(), 2u);  // the planner's path and the shortened one
+  for (const auto& row : j["rows"]) {
+    for (const char* key : {"task", "robot", "planner", "runs", "solved", "success_rate", "median_time_s",
+                            "mean_time_s", "median_path_length_rad", "mean_grasps"})
+      EXPECT_TRUE(row.contains(key)) << key;
+    EXPECT_EQ(row["runs"].get<int>(), 2);
+    EXPECT_EQ(row["success_rate"].get<double>(), 1.0);
+  }
+  EXPECT_LT(j["rows"][1]["median_path_length_rad"].get<double>(), j["rows"][0]["median_path_length_rad"].get<double>());
+  const std::string ompl = read_text(dir_ / "bench_shelf_0_panda.log");
+  EXPECT_NE(ompl.find("2 planners"), std::string::npos) << ompl.substr(0, 400);
+}
+
+}  // namespace
