@@ -96,6 +96,29 @@ private slots:
     QVERIFY2(msg.contains(QStringLiteral("never sampled")) || msg.contains(QStringLiteral("have no node")), qPrintable(msg));
   }
 
+  void aDemonstrationThatCannotBeDoneSaysWhichPickAndWhy() {
+    // shelf_2 from Panda pose 0: the upright bottle (YCBV_05) cannot be grasped where it stands.
+    Document doc(test::dataDir().toStdString());
+    doc.newFromBenchmark("shelf_2", "panda", 0);
+    PlannerSettings s = doc.plannerSettings();
+    s.planner.time_limit = 0.5;
+    doc.setPlannerSettings(s);
+    PlannerPanel panel(&doc);
+    panel.plan();
+    QVERIFY(test::waitFor([&] { return !doc.planner()->isRunning(); }, 20000));
+    QVERIFY(doc.result() != nullptr);
+    QVERIFY(!doc.result()->summary.solved);
+    const StepState step = doc.stepState(Step::Plan);
+    QCOMPARE(step.status, StepStatus::Error);
+    QVERIFY2(step.message.contains(QStringLiteral("pick 2 (YCBV_05) cannot be done")), qPrintable(step.message));
+    const QString msg = panel.messageLabel()->text();
+    QVERIFY2(msg.contains(QStringLiteral("cannot be done from this robot base pose")), qPrintable(msg));
+    QVERIFY2(msg.contains(QStringLiteral("handleZmy")), qPrintable(msg));
+    panel.resize(900, 600);
+    panel.show();
+    QVERIFY(panel.grab().save(test::artifactDir() + QStringLiteral("/planner_infeasible.png")));
+  }
+
   void planIsRefusedWhileTheDemonstrationIsBroken() {
     Document doc(test::dataDir().toStdString());
     doc.open(test::sampleProject());

@@ -571,6 +571,7 @@ void Document::onPlanFinished(const PlanOutcome& o) {
     s.trees = p.trees;
     s.nodes = p.nodes;
     r->unsampled_transitions = p.unsampled_transitions;
+    r->infeasible_picks = o.infeasible_picks;
     r->state_nodes = p.state_nodes;
     r->cancelled = p.cancelled;
     if (o.graph)
@@ -672,6 +673,10 @@ StepState Document::stepState(Step step) const {
       const ResultSummary& s = result_->summary;
       if (result_->cancelled) return {StepStatus::Warning, tr("Cancelled: ") + q(s.message)};
       if (resultStale()) return {StepStatus::Warning, tr("The demonstration changed since the last plan: plan again")};
+      if (!s.solved && !result_->infeasible_picks.empty()) {
+        const std::string first = result_->infeasible_picks.substr(0, result_->infeasible_picks.find(':'));
+        return {StepStatus::Error, tr("No path: %1 from this robot base pose (see the Planner panel)").arg(q(first))};
+      }
       if (!s.solved) return {StepStatus::Error, tr("No path: ") + q(s.message)};
       if (!s.valid) return {StepStatus::Warning, tr("The validator rejects the path: ") + q(s.message)};
       return {StepStatus::Ok, tr("Valid path found in %1 s").arg(s.planning_time_s, 0, 'f', 2)};

@@ -27,6 +27,7 @@ struct PlanResultData {
   ResultSummary summary;
   std::optional<Path> path;  // absent when planning failed or the path file is missing
   std::vector<std::string> unsampled_transitions;
+  std::string infeasible_picks;  // one line per pick that cannot be done from this base pose
   std::vector<std::string> state_names;
   std::vector<size_t> state_nodes;
   std::string shortcut_note;

@@ -5,10 +5,12 @@
 #include <chrono>
 
 #include "core/error.h"
+#include "core/graph/pick_feasibility.h"
 
 namespace demoplan::ui {
 
 namespace {
+constexpr int kFeasibilitySamples = 50;  // per transition, after a failed plan (about a second)
 QVector3D to_qt(const Eigen::Vector3d& p) { return QVector3D(float(p.x()), float(p.y()), float(p.z())); }
 }  // namespace
 
@@ -90,6 +92,8 @@ bool PlanRunner::start(PlanJob job) {
       path.task = job.task;
       path.robot = job.robot;
       path.robot_pose = job.robot_pose;
+      if (!outcome->result.plan.solved && !outcome->result.plan.cancelled && !cancel->load())
+        outcome->infeasible_picks = assess_picks(scene, *graph, checker, kFeasibilitySamples).summary(scene);
     } catch (const std::exception& e) {
       outcome->error = e.what();
     }

@@ -54,6 +54,9 @@ struct PlanOutcome {
   std::shared_ptr<const ConstraintGraph> graph;
   ValidationTask validation_task;
   SolveResult result;  // result.plan.path carries task, robot and pose
+  // After a failure (not a cancel): the picks that cannot be done from this base pose, one line
+  // each with the reason; empty when every pick can.
+  std::string infeasible_picks;
   double wall_time_s = 0.0;
 };
 

@@ -283,7 +283,14 @@ void PlannerPanel::onResult() {
   QString msg;
   if (!s.solved) {
     msg = tr("<span style='color:%1'><b>No path.</b></span> %2").arg(kErrorColor.name(), QString::fromStdString(s.message).toHtmlEscaped());
-    if (!r->unsampled_transitions.empty()) {
+    if (!r->infeasible_picks.empty()) {
+      QStringList picks;
+      for (const auto& line : QString::fromStdString(r->infeasible_picks).split('\n', Qt::SkipEmptyParts))
+        picks << line.toHtmlEscaped();
+      msg += tr("<br><b>The demonstration cannot be done from this robot base pose</b> — move the part or the "
+                "robot, or correct the pose at that event:<br>&nbsp;&nbsp;%1")
+                 .arg(picks.join(QStringLiteral("<br>&nbsp;&nbsp;")));
+    } else if (!r->unsampled_transitions.empty()) {
       QStringList names;
       for (const auto& t : r->unsampled_transitions) names << QString::fromStdString(t).toHtmlEscaped();
       msg += tr("<br>These transitions were never sampled without a collision — the grasp or placement they need "
