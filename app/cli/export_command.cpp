@@ -12,6 +12,7 @@
 #include "core/model/srdf.h"
 #include "core/trajectory/time_parameterization.h"
 #include "core/trajectory/trajectory_checker.h"
+#include "core/validation/trajectory_collisions.h"
 
 namespace demoplan::cli {
 
@@ -42,7 +43,13 @@ int run_export(const ExportCommandOptions& o) {
   TimingOptions timing;
   timing.source = o.path_file;
   timing.blend_length = o.blend;
-  const Trajectory tr = time_parameterize(path, limits, timing);
+  // The blends cut the path's corners: check them against the path's scene, and rest at the
+  // corners where they would touch something.
+  if (path.task.empty()) throw InputError(o.path_file, "task", "is empty: the scene is needed to check the blends");
+  const Scene scene = build_benchmark_scene(load_benchmark_task(o.data_dir, path.task), robot, path.robot_pose);
+  const CollisionChecker checker(scene);
+  const ClearTrajectory clear = time_parameterize_clear(scene, checker, path, limits, timing);
+  const Trajectory& tr = clear.trajectory;
 
   // The independent check, at the output's own rate where it streams samples.
   const double rate = o.format == "franka" ? 1000.0 : o.rate > 0 ? o.rate : o.servoj ? 125.0 : 100.0;
@@ -70,7 +77,12 @@ int run_export(const ExportCommandOptions& o) {
             << "  peak velocity        " << check.peak_velocity_ratio << " of the limit\n"
             << "  peak acceleration    " << check.peak_acceleration_ratio << " of the limit\n"
             << "  samples checked      " << samples.size() << " at " << rate << " Hz: "
-            << (check.ok ? "ok" : "FAILED: " + check.violations.front()) << "\n";
+            << (check.ok ? "ok" : "FAILED: " + check.violations.front()) << "\n"
+            << "  blends               " << tr.blends.size() << " collision-free"
+            << (clear.rests_added.empty() ? std::string()
+                                          : "; " + std::to_string(clear.rests_added.size()) +
+                                                " more rest(s) where a blend would touch the scene")
+            << "\n";
   for (const auto& f : written.files) std::cerr << "  wrote                " << f << "\n";
   for (const auto& w : written.warnings) std::cerr << "  warning              " << w << "\n";
   if (o.json) {
@@ -90,6 +102,8 @@ int run_export(const ExportCommandOptions& o) {
                      {"peak_jerk_ratio", check.peak_jerk_ratio},
                      {"max_path_deviation", check.max_path_deviation},
                      {"check_ok", check.ok},
+                     {"blends", tr.blends.size()},
+                     {"rests_added_for_clearance", clear.rests_added.size()},
                      {"violations", check.violations},
                      {"files", written.files},
                      {"warnings", written.warnings}};

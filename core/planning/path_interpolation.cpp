@@ -51,7 +51,13 @@ SceneState PathInterpolator::at(double t) const {
   k = std::clamp<size_t>(k, 1, wps.size() - 1) - 1;  // segment k: waypoints k, k+1
   const double span = cumulative_[k + 1] - cumulative_[k];
   const double u = span > 0 ? (d - cumulative_[k]) / span : 1.0;
-  s.q = (1 - u) * wps[k].q + u * wps[k + 1].q;
+  return on_segment(k, (1 - u) * wps[k].q + u * wps[k + 1].q, u);
+}
+
+SceneState PathInterpolator::on_segment(size_t k, const Eigen::VectorXd& q, double u) const {
+  const auto& wps = path_.waypoints;
+  SceneState s;
+  s.q = q;
   s.objects = wps[k].objects;
   PoseVector links;
   bool have_links = false;

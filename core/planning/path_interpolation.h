@@ -17,6 +17,10 @@ public:
 
   // The robot configuration and every object's world pose at parameter t.
   SceneState at(double t) const;
+  // The scene with the robot at q anywhere on segment k (waypoints k, k+1), e.g. a timed
+  // trajectory's blend near it: carried objects follow their link; u in [0, 1] places the
+  // uncarried ones.
+  SceneState on_segment(size_t k, const Eigen::VectorXd& q, double u) const;
   double length() const { return total_; }
   // Parameter of waypoint k.
   double waypoint_parameter(size_t k) const { return total_ > 0 ? cumulative_[k] / total_ : 0.0; }

@@ -146,6 +146,9 @@ Trajectory time_parameterize(const Path& path, const JointLimitSet& limits, cons
   for (size_t k = 0; k < n; ++k)
     stop[k] = k == 0 || k + 1 == n || W[k].action != GripperAction::None || seg[k - 1].length <= kTiny ||
               seg[k].length <= kTiny;
+  for (size_t k : o.rest_at)
+    if (k < n) stop[k] = 1;
+  if (!(o.blend_length > 0)) stop.assign(n, 1);  // no blends: rest at every waypoint
 
   // Blends at the other waypoints.
   std::vector<Corner> corner(n);
@@ -209,9 +212,11 @@ Trajectory time_parameterize(const Path& path, const JointLimitSet& limits, cons
       const double v = speed[k + 1];
       const Knot in{W[k + 1].q - c1.before * s.u, v * s.u, zero}, at{W[k + 1].q, v * c1.w, zero},
           out{W[k + 1].q + c1.after * seg[k + 1].u, v * seg[k + 1].u, zero};
+      const double begin = tr.motion.duration();
       tr.motion.add_quintic(in, at, c1.piece_in / v);
       tr.waypoint_times[k + 1] = tr.motion.duration();
       tr.motion.add_quintic(at, out, c1.piece_out / v);
+      tr.blends.push_back({k + 1, begin, tr.motion.duration()});
     } else {
       tr.waypoint_times[k + 1] = tr.motion.duration();
     }
@@ -232,6 +237,7 @@ Trajectory time_parameterize(const Path& path, const JointLimitSet& limits, cons
     tr.motion.scale_time(tr.safety_scale);
     tr.duration = tr.motion.duration();
     for (double& wt : tr.waypoint_times) wt *= tr.safety_scale;
+    for (auto& b : tr.blends) b.begin *= tr.safety_scale, b.end *= tr.safety_scale;
   }
   tr.trapezoid_duration = trapezoid_duration(path, limits);
   return tr;

@@ -7,6 +7,7 @@
 // through the waypoint, each joint moving monotonically (never beyond the neighbouring
 // waypoints' values). Velocities, accelerations and jerks stay within the limits everywhere.
 #include <string>
+#include <vector>
 
 #include "core/planning/path.h"
 #include "core/trajectory/joint_limits.h"
@@ -21,6 +22,9 @@ struct TimingOptions {
   // Plan within this fraction of every limit (the blend pieces are sized from samples).
   double limit_margin = 0.995;
   std::string source = "path";  // names the path in errors
+  // Waypoints where the robot must rest although it could pass (e.g. a blend there grazes an
+  // obstacle); indices into the path's waypoints.
+  std::vector<size_t> rest_at;
 };
 
 // Throws InputError (via check_path_within_limits) for a path outside the limits.

@@ -25,6 +25,13 @@ struct Trajectory {
   double duration = 0;                   // s
   double trapezoid_duration = 0;         // s: per-segment trapezoids stopping at every waypoint
   double safety_scale = 1;               // > 1 when the final check had to slow the motion down
+  // Where the motion leaves the path's straight segments: the blend around a pass-through
+  // waypoint, from `begin` to `end` (s). Everywhere else it is on the path.
+  struct Blend {
+    size_t waypoint = 0;
+    double begin = 0, end = 0;
+  };
+  std::vector<Blend> blends;
 
   // Closed from a grasp waypoint's time until the next release waypoint's time.
   bool gripper_closed_at(double t) const;

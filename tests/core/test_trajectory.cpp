@@ -12,6 +12,7 @@
 #include "core/trajectory/joint_limits.h"
 #include "core/trajectory/time_parameterization.h"
 #include "core/trajectory/trajectory_checker.h"
+#include "core/validation/trajectory_collisions.h"
 #include "tests/core/transition_path.h"
 
 namespace demoplan {
@@ -278,6 +279,35 @@ TEST(TimeParameterization, BlendsPassExactlyAndMonotonically) {
         EXPECT_LE(s.q[j], hi + 1e-12) << "t " << s.t << " joint " << j;
       }
     }
+}
+
+// The blends cut the path's corners. Where a cut touches the scene the robot rests at that corner
+// instead, and the retimed trajectory's blends are all collision-free.
+TEST(TrajectoryClearance, BlendsThatTouchTheSceneBecomeRests) {
+  int touched = 0;
+  for (const auto& [task, robot] : {std::pair{"shelf_1", "panda"}, std::pair{"tunnel_0", "ur5"}}) {
+    const BenchmarkPathCase& c = benchmark_case(task, robot);
+    const JointLimitSet limits = trajectory_limits(c.scene.robot.model);
+    const CollisionChecker checker(c.scene);
+    TimingOptions wide;
+    wide.blend_length = 0.5;
+    const Trajectory blended = time_parameterize(c.path, limits, wide);
+    const TrajectoryCollision before = first_trajectory_collision(c.scene, checker, c.path, blended);
+    const ClearTrajectory clear = time_parameterize_clear(c.scene, checker, c.path, limits, wide);
+    EXPECT_TRUE(first_trajectory_collision(c.scene, checker, c.path, clear.trajectory).free);
+    EXPECT_EQ(before.free, clear.rests_added.empty());
+    if (!before.free) {
+      ++touched;
+      EXPECT_EQ(clear.rests_added.front(), before.waypoint);
+      EXPECT_TRUE(clear.trajectory.stops[before.waypoint]);
+      EXPECT_LT(clear.trajectory.blends.size(), blended.blends.size());
+    }
+    EXPECT_TRUE(check_trajectory(clear.trajectory.sample(250.0), c.path, limits).ok);
+    std::printf("[ info ] %s %s: %zu blends, %zu became rests (first at %.3f s: %s / %s)\n", task, robot,
+                blended.blends.size(), clear.rests_added.size(), before.time, before.pair.first.c_str(),
+                before.pair.second.c_str());
+  }
+  EXPECT_GT(touched, 0);  // the approach corners near the parts make some blends touch
 }
 
 // A corner where one joint barely moves on both sides (as shortened paths have them): its share

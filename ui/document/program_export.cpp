@@ -8,6 +8,7 @@
 #include "core/trajectory/joint_limits.h"
 #include "core/trajectory/time_parameterization.h"
 #include "core/trajectory/trajectory_checker.h"
+#include "core/validation/trajectory_collisions.h"
 
 namespace demoplan::ui {
 
@@ -69,7 +70,11 @@ ProgramExport export_program_file(const Scene& scene, const Path& path, const st
     TimingOptions timing;
     timing.source = file;
     timing.blend_length = s.blend;
-    const Trajectory tr = time_parameterize(path, limits, timing);
+    const CollisionChecker checker(scene);
+    const ClearTrajectory clear = time_parameterize_clear(scene, checker, path, limits, timing);
+    const Trajectory& tr = clear.trajectory;
+    r.blends = tr.blends.size();
+    r.rests_added = clear.rests_added.size();
     r.duration_s = tr.duration;
     r.trapezoid_duration_s = tr.trapezoid_duration;
     const double rate = s.format == "franka" ? 1000.0 : s.rate > 0 ? s.rate : 100.0;

@@ -34,6 +34,8 @@ struct ProgramExport {
   double trapezoid_duration_s = 0.0;
   double peak_velocity_ratio = 0.0, peak_acceleration_ratio = 0.0;
   bool check_ok = false;
+  size_t blends = 0;       // corners passed without stopping, each checked collision-free
+  size_t rests_added = 0;  // corners where a blend would touch the scene: the robot rests there
   std::vector<std::string> violations;
   std::vector<std::string> limits;  // one line per joint: the limits used
   std::vector<std::string> files;

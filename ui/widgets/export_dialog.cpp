@@ -128,6 +128,9 @@ void ExportDialog::refreshPreview() {
                .arg(last_.peak_velocity_ratio * 100, 0, 'f', 0)
                .arg(last_.peak_acceleration_ratio * 100, 0, 'f', 0)
                .arg(last_.check_ok ? tr("ok") : tr("failed"));
+    html += tr("<br>%n corner(s) passed without stopping, each checked collision-free", nullptr, int(last_.blends));
+    if (last_.rests_added > 0)
+      html += tr("; the robot stops at %n more where passing would touch the scene", nullptr, int(last_.rests_added));
     preview_->setPlainText(QString::fromStdString(last_.text));
   }
   if (!last_.limits.empty()) {
