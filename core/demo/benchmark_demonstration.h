@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/demo/benchmark_task.h"
+#include "core/demo/deck_placement.h"
 #include "core/demo/demonstration.h"
 
 namespace demoplan {
@@ -28,10 +29,14 @@ Demonstration demonstration_from_subgoals(const BenchmarkTask& task);
 //    interval snapped onto the furniture surface (raw);
 //  - on nothing the furniture offers while the robot has a surface of its own (waiter: the
 //    demonstrator's tray, the KMR's deck): relative to the robot link carrying that surface,
-//    at the object's offset from the tray centre, snapped onto the surface.
+//    at the object's offset from the tray centre, snapped onto the surface; then
+//    choose_deck_poses() (deck_placement.h) moves it on the surface where the picks that put it
+//    there and take it off could not be done from that pose. `deck` (optional) receives what it
+//    chose, with a note per object.
 // Throws InputError naming the event when an object rests on nothing.
 enum class PoseSource { Subgoals, Raw };
-Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scene& scene, PoseSource source);
+Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scene& scene, PoseSource source,
+                                           DeckPlacementReport* deck = nullptr);
 
 // How far one demonstration's object poses lie from another's (same events), over every
 // (event, object) pair whose pose is in the world in both.
