@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <queue>
 #include <random>
@@ -8,6 +9,7 @@
 #include "core/graph/projector.h"
 #include "core/graph/state_validity.h"
 #include "core/planning/nearest_neighbors.h"
+#include "core/planning/path_interpolation.h"
 #include "core/planning/planner.h"
 
 namespace demoplan {
@@ -76,6 +78,41 @@ public:
       groups_in_state_[s].insert(a);
     }
   }
+  // Removes the link between two nodes and recomputes the trees from the remaining links (the
+  // union-find cannot split): used when a found path fails the final check.
+  void cut(int a, int b) {
+    auto drop = [&](int from, int to) {
+      auto& l = links_[from];
+      l.erase(std::remove_if(l.begin(), l.end(), [&](const Link& k) { return k.to == to; }), l.end());
+    };
+    drop(a, b);
+    drop(b, a);
+    parent_.clear();
+    nodes_in_group_.clear();
+    by_group_.clear();
+    for (auto& g : groups_in_state_) g.clear();
+    std::vector<int> tree(nodes_.size(), -1);
+    std::vector<int> stack;
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+      if (tree[i] >= 0) continue;
+      const int t = new_tree();
+      tree[i] = t;
+      stack.push_back(static_cast<int>(i));
+      while (!stack.empty()) {
+        const int u = stack.back();
+        stack.pop_back();
+        for (const Link& l : links_[u])
+          if (tree[l.to] < 0) tree[l.to] = t, stack.push_back(l.to);
+      }
+    }
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+      Node& n = nodes_[i];
+      n.tree = tree[i];
+      group_index(n.state, n.tree).add(static_cast<int>(i), n.q);
+      groups_in_state_[n.state].insert(n.tree);
+      ++nodes_in_group_[n.tree];
+    }
+  }
   int nearest(int state, const Eigen::VectorXd& q) const { return all_[state].nearest(q); }
   int random_node(int state, std::mt19937_64& rng) const {
     const auto& ids = all_[state].ids();
@@ -87,6 +124,7 @@ public:
   std::vector<int> groups_in(int state) const {
     return {groups_in_state_[state].begin(), groups_in_state_[state].end()};
   }
+  size_t group_count(int state) const { return groups_in_state_[state].size(); }
   std::vector<int> states_with_nodes() const {
     std::vector<int> out;
     for (size_t s = 0; s < all_.size(); ++s)
@@ -133,10 +171,11 @@ class GuidedRrt {
 public:
   GuidedRrt(const Scene& scene, const ConstraintGraph& graph, const CollisionChecker& checker,
             const PlannerParams& params, const ProgressCallback& progress, const std::atomic<bool>* cancel)
-      : scene_(scene), graph_(graph), params_(params), progress_(progress), cancel_(cancel),
+      : scene_(scene), graph_(graph), checker_(checker), params_(params), progress_(progress), cancel_(cancel),
         projector_(scene, graph), validity_(scene, graph, checker, params.resolution),
         data_(checker.make_data()), forest_(static_cast<int>(graph.states.size()), scene.robot.model.nq),
-        rng_(params.seed), sampled_(graph.transitions.size(), 0) {}
+        rng_(params.seed), sampled_(graph.transitions.size(), 0),
+        roots_(graph.transitions.size()) {}
 
   PlanResult run() {
     start_time_ = Clock::now();
@@ -151,13 +190,37 @@ public:
     goal_ = forest_.add_node(graph_.q_goal, graph_.goal_state, forest_.new_tree());
     trees_created_ = 2;
     attempt_link(goal_);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    while (!connected()) {
-      if (stop_requested(result)) break;
-      ++iterations_;
-      if (u(rng_) < params_.eta_sample_tree) sample_tree();
-      else grow();
-      report(false);
+    std::vector<int> chain;
+    bool accepted = false;
+    while (true) {
+      while (!connected()) {
+        if (stop_requested(result)) break;
+        ++iterations_;
+        const int state = choose_step();
+        if (state < 0) sample_tree();
+        else grow(state);
+        report(false);
+      }
+      if (!connected()) break;
+      result.path = extract_path(chain);
+      if (!params_.final_check) {
+        accepted = true;
+        break;
+      }
+      // Beyond the paper: see PlannerParams::final_check.
+      const int bad = check_path(result.path);
+      if (cancelled()) {
+        stop_requested(result);
+        break;
+      }
+      if (bad < 0) {
+        accepted = true;
+        break;
+      }
+      const int a = chain[static_cast<size_t>(bad)], b = chain[static_cast<size_t>(bad) + 1];
+      forbidden_.insert({std::min(a, b), std::max(a, b)});
+      forest_.cut(a, b);
+      ++result.rejected_paths;
     }
     result.iterations = iterations_;
     result.trees = trees_created_;
@@ -167,11 +230,11 @@ public:
     for (size_t t = 0; t < sampled_.size(); ++t)
       if (!sampled_[t]) result.unsampled_transitions.push_back(graph_.transitions[t].name);
     report(true);
-    if (connected()) {
+    if (accepted) {
       result.solved = true;
-      result.path = extract_path();
-    } else if (result.message.empty()) {
-      result.message = "no path within " + std::to_string(iterations_) + " iterations";
+    } else {
+      result.path = {};
+      if (result.message.empty()) result.message = "no path within " + std::to_string(iterations_) + " iterations";
     }
     return result;
   }
@@ -213,7 +276,8 @@ private:
   void record_edge(int a, int b) {
     if (!progress_) return;
     const Node& n = forest_.node(b);
-    pending_edges_.push_back({forest_.find(n.tree), n.state, forest_.node(a).q, n.q});
+    pending_edges_.push_back({-1, n.state, forest_.node(a).q, n.q});
+    pending_edge_nodes_.push_back(b);
   }
 
   // Alg. 1, lines 4-14: a new tree at a sampled transition, linked to the trees of its states.
@@ -235,7 +299,17 @@ private:
     const TransitionSample s = (forest_.state_size(from) > 0 && u(rng_) < params_.seed_from_trees)
                                    ? projector_.sample_on_transition(t, forest_.node(forest_.random_node(from, rng_)).q, rng_)
                                    : projector_.sample_on_transition(t, rng_);
-    if (!s.ok || !validity_.transition_free(s, data_)) return;
+    if (!s.ok) return;
+    // A non-redundant arm reaches a handle in a few discrete ways: a projection often lands on
+    // a root this transition has already. Another tree there would only repeat its links.
+    for (const int r : roots_[t]) {
+      const Node& n = forest_.node(r);
+      if ((n.q - s.q_from()).norm() < params_.same_root) {
+        ++sampled_[t];
+        return;
+      }
+    }
+    if (!validity_.transition_free(s, data_)) return;
     ++sampled_[t];
     const GraphTransition& tr = graph_.transitions[t];
     const int tree = forest_.new_tree();
@@ -247,16 +321,37 @@ private:
       previous = add(s.path[k], in_to ? s.state_to : s.state_from, tree, previous, previous >= 0);
       if (first < 0) first = previous;
     }
+    roots_[t].push_back(first);
     if (progress_) pending_roots_.emplace_back(s.state_from, s.q_from());
     attempt_link(first);
     attempt_link(previous);
   }
 
-  // Alg. 1, lines 15-25: one step of a tree in a random state towards a random configuration.
-  void grow() {
+  // Alg. 1, line 4: -1 to sample a new tree (probability eta), else the state to grow in
+  // (line 16). Beyond the paper: a state whose nodes all belong to one tree cannot link anything,
+  // so it is drawn with weight lone_tree_weight instead of 1; the probability mass taken from
+  // growth that way goes to sampling trees (eta is the probability when every state can link).
+  int choose_step() {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
     const std::vector<int> states = forest_.states_with_nodes();
-    std::uniform_int_distribution<size_t> pick(0, states.size() - 1);
-    const int state = states[pick(rng_)];
+    if (params_.lone_tree_weight >= 1.0) {
+      if (u(rng_) < params_.eta_sample_tree) return -1;
+      return states[std::uniform_int_distribution<size_t>(0, states.size() - 1)(rng_)];
+    }
+    std::vector<double> w;
+    double sum = 0.0;
+    for (int s : states) {
+      w.push_back(forest_.group_count(s) > 1 ? 1.0 : params_.lone_tree_weight);
+      sum += w.back();
+    }
+    const double eta = params_.eta_sample_tree;
+    const double grow_mass = (1.0 - eta) * sum / static_cast<double>(states.size());
+    if (u(rng_) * (eta + grow_mass) < eta) return -1;
+    return states[std::discrete_distribution<size_t>(w.begin(), w.end())(rng_)];
+  }
+
+  // Alg. 1, lines 15-25: one step of a tree in a state towards a random configuration.
+  void grow(int state) {
     const Eigen::VectorXd q_rand = projector_.sample_configuration(state, rng_);
     const int nn = forest_.nearest(state, q_rand);
     const Eigen::VectorXd& q_nn = forest_.node(nn).q;
@@ -282,12 +377,15 @@ private:
         const Eigen::VectorXd d = q - from;
         const double len = d.norm();
         if (len <= params_.step) {
-          reached = validity_.segment_free(state, from, q, data_);
+          reached = !forbidden_.count({std::min(last, id), std::max(last, id)}) &&
+                    validity_.segment_free(state, from, q, data_);
           break;
         }
         const Eigen::VectorXd next = from + d * (params_.step / len);
         if (!validity_.configuration_free(state, next, data_) || !validity_.segment_free(state, from, next, data_)) break;
         last = add(next, state, forest_.node(last).tree, last, false);
+        report(false);  // a long extension must not hold back progress or cancel
+        if (cancelled()) break;
       }
       if (reached) {
         forest_.add_link(last, id, false);
@@ -310,17 +408,47 @@ private:
     p.nodes = forest_.size();
     p.tree_nodes = forest_.tree_sizes();
     for (size_t s = 0; s < graph_.states.size(); ++s) p.state_nodes.push_back(forest_.state_size(static_cast<int>(s)));
-    for (auto& e : pending_edges_) e.tree = forest_.tree_rank(forest_.find(e.tree));
+    for (size_t k = 0; k < pending_edges_.size(); ++k)
+      pending_edges_[k].tree = forest_.tree_rank(forest_.find(forest_.node(pending_edge_nodes_[k]).tree));
     p.new_edges = std::move(pending_edges_);
     p.new_roots = std::move(pending_roots_);
     pending_edges_.clear();
+    pending_edge_nodes_.clear();
     pending_roots_.clear();
     p.final = final;
     progress_(p);
   }
 
+  // The first segment of a found path (index of its first waypoint) with a collision at one of
+  // the benchmark's samples (PlannerParams::final_check), -1 when there is none.
+  int check_path(const Path& path) {
+    const PathInterpolator interp(scene_, path);
+    std::set<double> ts;
+    const int n = static_cast<int>(std::ceil((1.0 + params_.check_delta) / params_.check_delta));
+    for (int k = 0; k < n; ++k) ts.insert(std::min(1.0, k * params_.check_delta));
+    if (interp.length() > 0) {
+      for (size_t k = 0; k + 1 < path.waypoints.size(); ++k) {
+        const double a = interp.waypoint_parameter(k), b = interp.waypoint_parameter(k + 1);
+        const int steps = static_cast<int>(std::ceil((b - a) * interp.length() / params_.check_max_step));
+        for (int i = 0; i <= steps; ++i) ts.insert(a + (b - a) * i / std::max(steps, 1));
+      }
+    }
+    long count = 0;
+    for (const double t : ts) {
+      if (++count % 64 == 0) {
+        report(false);
+        if (cancelled()) return -1;
+      }
+      if (!checker_.in_collision(interp.at(t), data_)) continue;
+      int k = 0;
+      while (k + 2 < static_cast<int>(path.waypoints.size()) && interp.waypoint_parameter(static_cast<size_t>(k) + 1) <= t) ++k;
+      return k;
+    }
+    return -1;
+  }
+
   // Shortest chain of nodes from start to goal (Dijkstra on joint-space length).
-  Path extract_path() const {
+  Path extract_path(std::vector<int>& chain) const {
     const size_t n = forest_.size();
     std::vector<double> dist(n, std::numeric_limits<double>::infinity());
     std::vector<int> prev(n, -1);
@@ -337,7 +465,7 @@ private:
         if (nd < dist[l.to]) dist[l.to] = nd, prev[l.to] = u, open.push({nd, l.to});
       }
     }
-    std::vector<int> chain;
+    chain.clear();
     for (int v = goal_; v >= 0; v = prev[v]) chain.push_back(v);
     std::reverse(chain.begin(), chain.end());
     std::vector<Eigen::VectorXd> qs;
@@ -357,6 +485,7 @@ private:
 
   const Scene& scene_;
   const ConstraintGraph& graph_;
+  const CollisionChecker& checker_;
   PlannerParams params_;
   const ProgressCallback& progress_;
   const std::atomic<bool>* cancel_;
@@ -365,12 +494,15 @@ private:
   CollisionData data_;
   Forest forest_;
   std::mt19937_64 rng_;
-  std::vector<int> sampled_;  // collision-free roots per transition
+  std::vector<int> sampled_;  // collision-free samples per transition (repeated roots included)
+  std::set<std::pair<int, int>> forbidden_;  // links cut after a failed path check
+  std::vector<std::vector<int>> roots_;  // per transition: the first node of each root
   int start_ = -1, goal_ = -1;
   long iterations_ = 0;
   int trees_created_ = 0;
   Clock::time_point start_time_, last_progress_;
   std::vector<EdgeSnapshot> pending_edges_;
+  std::vector<int> pending_edge_nodes_;  // the node each pending edge leads to
   std::vector<std::pair<int, Eigen::VectorXd>> pending_roots_;
 };
 

@@ -23,10 +23,24 @@ struct PlannerParams {
   double time_limit = 60.0;      // s, wall clock
   std::uint64_t seed = 1;
   double progress_period = 0.05;  // s between progress callbacks
-  // Beyond the paper: draw transitions with weight 1 / (1 + roots they already have) instead of
-  // uniformly, and seed a transition's projection from a node of its source state this often.
+  // Beyond the paper: draw transitions with weight 1 / (1 + collision-free samples they already
+  // gave) instead of uniformly, and seed a transition's projection from a node of its source
+  // state this often.
   bool balance_transitions = true;
   double seed_from_trees = 0.5;
+  // Weight, relative to 1, of growing in a state whose nodes all belong to one tree (1: the
+  // paper's uniform choice); what it takes from growth goes to sampling trees.
+  double lone_tree_weight = 0.05;
+  // A transition sample whose first configuration is this close to a root the transition has
+  // already is not made a tree again (a 6-joint arm meets a handle in at most 8 ways).
+  double same_root = 1e-3;
+  // Beyond the paper: a found path is collision-checked again where the benchmark samples it
+  // (t = k * check_delta along its length, plus enough points that no two are more than
+  // check_max_step apart): between the edges' samples a held object can clip an obstacle edge.
+  // A segment that fails is cut from the trees, never made again, and planning goes on.
+  bool final_check = true;
+  double check_delta = 0.001;
+  double check_max_step = 0.01;
 };
 
 // One edge added since the previous snapshot, for drawing the trees grow.
@@ -42,7 +56,8 @@ struct PlannerProgress {
   int trees = 0;                       // trees left after merging
   size_t nodes = 0;
   std::vector<size_t> tree_nodes;      // per current tree
-  std::vector<size_t> state_nodes;     // per graph state
+  std::vector<size_t> state_nodes;
+  int rejected_paths = 0;  // found paths the final check rejected (see PlannerParams::final_check)     // per graph state
   std::vector<EdgeSnapshot> new_edges; // since the previous snapshot
   std::vector<std::pair<int, Eigen::VectorXd>> new_roots;  // (state, q) of new transition trees
   bool final = false;
@@ -60,6 +75,7 @@ struct PlanResult {
   size_t nodes = 0;
   double planning_time_s = 0.0;
   std::vector<size_t> state_nodes;
+  int rejected_paths = 0;  // found paths the final check rejected (see PlannerParams::final_check)
   // Transitions never sampled collision-free: for "which transition could not be sampled".
   std::vector<std::string> unsampled_transitions;
 };
