@@ -56,8 +56,8 @@ struct PlannerProgress {
   int trees = 0;                       // trees left after merging
   size_t nodes = 0;
   std::vector<size_t> tree_nodes;      // per current tree
-  std::vector<size_t> state_nodes;
-  int rejected_paths = 0;  // found paths the final check rejected (see PlannerParams::final_check)     // per graph state
+  std::vector<size_t> state_nodes;     // per graph state
+  int rejected_paths = 0;  // found paths the final check rejected (see PlannerParams::final_check)
   std::vector<EdgeSnapshot> new_edges; // since the previous snapshot
   std::vector<std::pair<int, Eigen::VectorXd>> new_roots;  // (state, q) of new transition trees
   bool final = false;

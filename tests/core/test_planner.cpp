@@ -134,6 +134,32 @@ TEST(GuidedPlanner, ReportsProgressAtLeastTenTimesASecond) {
   EXPECT_FALSE(r.unsampled_transitions.empty());  // the unreachable releases are named
 }
 
+// Edges checked far too coarsely (every 0.4 rad) cut through obstacles; the final check at the
+// benchmark's sampling must catch those paths and planning must go on to a valid one.
+TEST(GuidedPlanner, TheFinalCheckRejectsPathsThatPassThroughObstacles) {
+  Problem p("shelf_1", "panda", 1);
+  int invalid_unchecked = 0, rejected = 0;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    PlannerParams coarse = params(seed);
+    coarse.resolution = 0.4;
+    coarse.final_check = false;
+    const PlanResult unchecked = plan_guided(p.scene, p.graph, *p.checker, coarse);
+    ASSERT_TRUE(unchecked.solved) << unchecked.message;
+    if (!validate_path(p.scene, p.vtask, unchecked.path).valid) ++invalid_unchecked;
+
+    coarse.final_check = true;
+    const PlanResult checked = plan_guided(p.scene, p.graph, *p.checker, coarse);
+    ASSERT_TRUE(checked.solved) << checked.message;
+    const ValidationReport v = validate_path(p.scene, p.vtask, checked.path);
+    EXPECT_TRUE(v.valid) << "seed " << seed << ": " << v.message;
+    rejected += checked.rejected_paths;
+  }
+  std::printf("coarse edges: %d of 3 paths invalid without the final check; %d rejected with it\n",
+              invalid_unchecked, rejected);
+  EXPECT_GT(invalid_unchecked, 0);  // without the check the coarse planner does return bad paths
+  EXPECT_GT(rejected, 0);
+}
+
 // The validator catches paths broken on purpose, naming what and where.
 class BrokenPath : public ::testing::Test {
 protected:
