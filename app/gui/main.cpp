@@ -28,7 +28,8 @@ int createProject(const QString& spec, const QString& video, const QString& came
   }
   try {
     demoplan::ui::Document doc(data_dir);
-    doc.newFromBenchmark(parts[0].toStdString(), parts[1].toStdString(), pose);
+    for (const auto& note : doc.newFromBenchmark(parts[0].toStdString(), parts[1].toStdString(), pose))
+      std::fprintf(stderr, "demoplan: on the robot's deck: %s\n", note.c_str());
     if (!video.isEmpty()) doc.setVideo(video);
     if (!camera.isEmpty()) doc.setCamera(camera);
     if (!markers.isEmpty()) doc.setMarkers(markers);

@@ -115,7 +115,7 @@ void Document::loadScene(const SceneReference& ref, std::shared_ptr<const Scene>
   task = std::move(t);
 }
 
-void Document::newFromBenchmark(const std::string& task_name, const std::string& robot, int pose) {
+std::vector<std::string> Document::newFromBenchmark(const std::string& task_name, const std::string& robot, int pose) {
   Project p;
   p.scene.task = task_name;
   p.scene.robot = robot;
@@ -123,8 +123,10 @@ void Document::newFromBenchmark(const std::string& task_name, const std::string&
   std::shared_ptr<const Scene> scene;
   std::shared_ptr<const BenchmarkTask> task;
   loadScene(p.scene, scene, task);
-  p.demonstration = demonstration_from_benchmark(*task, *scene, PoseSource::Subgoals);
+  DeckPlacementReport deck;
+  p.demonstration = demonstration_from_benchmark(*task, *scene, PoseSource::Subgoals, &deck);
   install(std::move(p), std::move(scene), std::move(task), QString());
+  return deck.notes();
 }
 
 void Document::open(const QString& file) {

@@ -49,7 +49,8 @@ public:
   ~Document() override;
 
   // ---- files (throw InputError naming file and field; the document is unchanged on error)
-  void newFromBenchmark(const std::string& task, const std::string& robot, int pose);
+  // Returns one line per object riding on the robot's deck (waiter): where it rides and why.
+  std::vector<std::string> newFromBenchmark(const std::string& task, const std::string& robot, int pose);
   void open(const QString& file);
   void save();                        // to filePath(); throws when it is empty or a template
   void saveAs(const QString& file);

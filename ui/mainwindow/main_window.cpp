@@ -509,9 +509,10 @@ bool MainWindow::openSample() {
 
 bool MainWindow::newFromBenchmark(const QString& task, const QString& robot, int pose) {
   QApplication::setOverrideCursor(Qt::WaitCursor);
+  std::vector<std::string> deck_notes;
   try {
     removeAutosave();
-    doc_->newFromBenchmark(task.toStdString(), robot.toStdString(), pose);
+    deck_notes = doc_->newFromBenchmark(task.toStdString(), robot.toStdString(), pose);
   } catch (const std::exception& e) {
     QApplication::restoreOverrideCursor();
     reportError(tr("Cannot create the project"), QString::fromUtf8(e.what()));
@@ -519,6 +520,13 @@ bool MainWindow::newFromBenchmark(const QString& task, const QString& robot, int
   }
   QApplication::restoreOverrideCursor();
   updateTitle();
+  // Objects riding on the robot's deck may have been moved from where the demonstrator put
+  // them so the arm can pick them: say so, since the 3D view shows them there.
+  if (!deck_notes.empty()) {
+    QStringList lines;
+    for (const auto& n : deck_notes) lines << QString::fromStdString(n);
+    statusBar()->showMessage(tr("On the robot's deck: %1").arg(lines.join(QStringLiteral("; "))), 30000);
+  }
   return true;
 }
 
