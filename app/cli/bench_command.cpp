@@ -2,6 +2,7 @@
 // every found path is checked by the validator. Prints the columns of the paper's Fig. 4.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -246,13 +247,20 @@ int run_bench(const BenchOptions& o) {
                       {"feasible_runs", feasible}, {"success_rate_feasible", feasible_rate},
                       {"median_time_s", median(times)}, {"mean_time_s", mean(times)},
                       {"median_path_length_rad", median(lengths)}, {"mean_grasps", mean(grasps)}});
+      // A figure over no runs (nothing solved, no feasible instance) is printed as "-".
+      auto cell = [](double v, int width, const char* unit = "") {
+        std::ostringstream c;
+        if (std::isnan(v)) c << "-";
+        else c << std::fixed << std::setprecision(2) << v << unit;
+        return (std::ostringstream() << std::setw(width) << c.str()).str();
+      };
       std::cerr << std::left << std::setw(10) << key.first << std::setw(10) << key.second << std::setw(17) << name
-                << std::right << std::fixed << std::setprecision(2) << std::setw(6) << group.size() << std::setw(9)
-                << feasible << std::setw(8) << rate * 100 << "%" << std::setw(9) << feasible_rate * 100 << "%" << std::setw(10) << median(times) << std::setw(9) << mean(times) << std::setw(12)
-                << median(lengths) << std::setw(8) << mean(grasps) << "\n" << std::defaultfloat;
+                << std::right << std::setw(6) << group.size() << std::setw(9) << feasible << cell(rate * 100, 9, "%")
+                << cell(feasible_rate * 100, 10, "%") << cell(median(times), 10) << cell(mean(times), 9)
+                << cell(median(lengths), 12) << cell(mean(grasps), 8) << "\n";
     }
   }
-  std::cerr << "total " << total_s << " s\n";
+  std::cerr << "total " << std::lround(total_s) << " s\n";
   if (!o.out.empty()) {
     nlohmann::json all = nlohmann::json::array();
     for (const Run& r : runs)
