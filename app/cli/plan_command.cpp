@@ -69,10 +69,12 @@ int run_plan(const PlanOptions& o) {
   path.robot_pose = o.inputs.pose;
   if (sp.shortcut) {
     std::cerr << "  shortcut: " << s.shortcut.length_before << " -> " << s.shortcut.length_after << " rad in "
-              << s.shortcut.time_s << " s (" << s.shortcut.accepted << " of " << s.shortcut.attempts << " cuts)"
+              << s.shortcut.time_s << " s (" << s.shortcut.accepted << " of " << s.shortcut.attempts << " cuts, "
+              << s.shortcut.detours_removed << " put-back detours removed)"
               << (s.shortened ? "" : "; dropped: " + s.shortcut_rejection) << "\n";
     j["shortcut"] = {{"length_before", s.shortcut.length_before}, {"length_after", s.shortcut.length_after},
-                     {"time_s", s.shortcut.time_s}, {"kept", s.shortened}};
+                     {"time_s", s.shortcut.time_s}, {"kept", s.shortened},
+                     {"detours_removed", s.shortcut.detours_removed}};
   }
   const ValidationReport& v = s.validation;
   std::cerr << "  validator (" << vt.source << "): " << (v.valid ? "valid" : "INVALID: " + v.message) << "; length robot "

@@ -33,6 +33,11 @@ int run_validate(const ValidateOptions& o) {
   std::cerr << o.path_file << " on " << scene.name << ": " << (v.valid ? "valid" : "INVALID: " + v.message)
             << "\n  length: robot " << v.length.robot << " rad, objects " << v.length.object_translation << " m / "
             << v.length.object_rotation << " rad; " << v.grasps << " grasps; " << v.samples << " samples\n";
+  nlohmann::json grasps = nlohmann::json::array();
+  for (const auto& g : v.counted_grasps) {
+    std::cerr << "  grasp at t = " << g.t << ": " << g.object << " by " << g.handle << "\n";
+    grasps.push_back({{"t", g.t}, {"object", g.object}, {"handle", g.handle}});
+  }
   if (o.json)
     std::cout << nlohmann::json{{"valid", v.valid},
                                 {"message", v.message},
@@ -41,6 +46,7 @@ int run_validate(const ValidateOptions& o) {
                                                  {"object_m", v.length.object_translation},
                                                  {"object_rad", v.length.object_rotation}}},
                                 {"grasps", v.grasps},
+                                {"counted_grasps", grasps},
                                 {"samples", v.samples}}
                      .dump()
               << std::endl;

@@ -1,9 +1,12 @@
 #include "core/planning/shortcut.h"
 
+#include <algorithm>
 #include <chrono>
+#include <memory>
 #include <random>
 
 #include "core/graph/state_validity.h"
+#include "core/planning/connect_in_state.h"
 
 namespace demoplan {
 
@@ -26,6 +29,55 @@ Waypoint waypoint_at(const Scene& scene, const ConstraintGraph& g, const Path& p
   return w;
 }
 
+// A path can leave a placement state and come back to it unchanged: grasp a part and put it
+// back where it was, where the planner linked two trees of that state through a grasp state.
+// That grasp does nothing for the task but is counted (the benchmark's number of grasps) and
+// done by the robot. Joins the first waypoint before such a detour to the first one after it
+// within the state (RRT-Connect), for at most `seconds` each.
+int remove_detours(const Scene& scene, const ConstraintGraph& graph, const StateValidity& validity,
+                   CollisionData& data, Path& path, std::mt19937_64& rng, double seconds) {
+  std::unique_ptr<ConstraintProjector> sampler;  // built at the first detour: most paths have none
+  int removed = 0;
+  auto& w = path.waypoints;
+  // A waypoint inside a straight approach or retreat cannot be an end: the move must stay whole.
+  auto inside_straight_move = [&](size_t k) { return k > 0 && w[k - 1].approach && w[k].approach; };
+  for (size_t i = 0; i + 2 < w.size(); ++i) {
+    const int s = w[i].state;
+    if (graph.states[s].kind != StateKind::Placement || inside_straight_move(i)) continue;
+    // j: the first waypoint after the path's last return to s that is not inside the retreat
+    // from the put-back (its end, where the path moves on freely).
+    size_t back = w.size();
+    for (size_t k = w.size() - 1; k > i + 1 && back == w.size(); --k)
+      if (w[k].state == s && w[k - 1].state != s) back = k;
+    size_t j = back;
+    while (j < w.size() && w[j].state == s && inside_straight_move(j)) ++j;
+    if (back == w.size() || j == w.size() || w[j].state != s) continue;
+    if (!sampler) sampler = std::make_unique<ConstraintProjector>(scene, graph);
+    ConnectParams cp;
+    cp.deadline = std::chrono::steady_clock::now() +
+                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+    const auto via = connect_in_state(*sampler, validity, data, s, w[i].q, w[j].q, rng, cp);
+    if (!via) {  // try the next detour, not this one again from the next waypoint
+      while (i + 1 < w.size() && w[i + 1].state == s) ++i;
+      continue;
+    }
+    std::vector<Waypoint> out(w.begin(), w.begin() + static_cast<long>(i) + 1);
+    out.back().approach = false;
+    for (const auto& q : *via) {
+      Waypoint v;
+      v.q = q;
+      v.state = s;
+      v.state_name = graph.states[s].name;
+      v.objects = scene_state(scene, graph, s, q).objects;
+      out.push_back(std::move(v));
+    }
+    out.insert(out.end(), w.begin() + static_cast<long>(j), w.end());
+    w = std::move(out);
+    ++removed;
+  }
+  return removed;
+}
+
 }  // namespace
 
 ShortcutResult shortcut_path(const Scene& scene, const ConstraintGraph& graph, const CollisionChecker& checker,
@@ -38,8 +90,10 @@ ShortcutResult shortcut_path(const Scene& scene, const ConstraintGraph& graph, c
   CollisionData data = checker.make_data();
   std::mt19937_64 rng(params.seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
+  if (params.detour_time > 0) r.detours_removed = remove_detours(scene, graph, validity, data, path, rng, params.detour_time);
+  const auto t1 = Clock::now();  // the shortcut budget starts after the detours
   while (r.attempts < params.max_attempts &&
-         std::chrono::duration<double>(Clock::now() - t0).count() < params.time_limit) {
+         std::chrono::duration<double>(Clock::now() - t1).count() < params.time_limit) {
     ++r.attempts;
     auto& w = path.waypoints;
     if (w.size() < 3) break;

@@ -17,15 +17,21 @@ struct ShortcutParams {
   // run close along an obstacle.
   double resolution = 0.0025;
   std::uint64_t seed = 1;
+  // Beyond the paper: before shortcutting, a detour that grasps a part and puts it back
+  // unmoved is replaced by a link within the placement state (RRT-Connect), trying for up to
+  // this long (s) per detour; time_limit then applies to the shortcuts.
+  double detour_time = 1.0;
 };
 
 struct ShortcutResult {
   double length_before = 0.0, length_after = 0.0;  // robot joint-space length (rad)
   long attempts = 0, accepted = 0;
+  int detours_removed = 0;  // grasps of a part that was put back unmoved, cut out
   double time_s = 0.0;
 };
 
-// Shortens `path` in place; it stays a path of the same states in the same order.
+// Shortens `path` in place; it stays a path of the same states in the same order, less any
+// detour that leaves a placement state and returns to it.
 ShortcutResult shortcut_path(const Scene& scene, const ConstraintGraph& graph, const CollisionChecker& checker,
                              Path& path, const ShortcutParams& params);
 

@@ -176,7 +176,10 @@ ValidationReport validate_path(const Scene& scene, const ValidationTask& task, c
       }
       // compute_n_grasps: (gripper, handle) pairs new since the previous sample.
       for (const auto& p : held)
-        if (!held_prev.count(p)) ++r.grasps;
+        if (!held_prev.count(p)) {
+          ++r.grasps;
+          r.counted_grasps.push_back({t, scene.objects[p.object].id, scene.objects[p.object].srdf.handles[p.handle].name});
+        }
     }
     prev = s;
     held_prev = std::move(held);

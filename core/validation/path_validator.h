@@ -4,6 +4,7 @@
 // keeps every object grasped or placed, never moves a placed object; and the benchmark's
 // metrics (path length, number of grasps).
 #include <string>
+#include <vector>
 
 #include "core/demo/benchmark_task.h"
 #include "core/demo/demonstration.h"
@@ -40,12 +41,20 @@ struct PathLength {
   double object_rotation = 0.0;     // rad
 };
 
+// One grasp as the benchmark counts it: a (gripper, handle) pair that holds at sample t and did
+// not at the previous sample.
+struct CountedGrasp {
+  double t = 0.0;
+  std::string object, handle;
+};
+
 struct ValidationReport {
   bool valid = false;
   std::string message;  // the first failure, with its parameter t; "ok" when valid
   double failure_t = -1.0;
   PathLength length;    // on the benchmark's samples
   int grasps = 0;
+  std::vector<CountedGrasp> counted_grasps;  // grasps.size() of them, in order
   size_t samples = 0;
 };
 

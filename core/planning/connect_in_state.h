@@ -1,0 +1,29 @@
+#pragma once
+// RRT-Connect between two configurations of one graph state: used to join the two ends of a
+// detour the guided planner left in a path (shortcut.h). Small, short-lived trees: nearest
+// neighbours by linear scan.
+#include <chrono>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "core/graph/state_validity.h"
+
+namespace demoplan {
+
+struct ConnectParams {
+  double step = 0.3;  // rad: extension step, as the guided planner's delta
+  std::chrono::steady_clock::time_point deadline;
+};
+
+// The configurations strictly between `a` and `b` of a collision-free piecewise-straight path
+// in `state` (empty when the straight segment is free), or nothing by the deadline. Both ends
+// must be collision-free. Deterministic for a given rng state (as long as the deadline is not
+// what stops it).
+std::optional<std::vector<Eigen::VectorXd>> connect_in_state(const ConstraintProjector& sampler,
+                                                              const StateValidity& validity, CollisionData& data,
+                                                              int state, const Eigen::VectorXd& a,
+                                                              const Eigen::VectorXd& b, std::mt19937_64& rng,
+                                                              const ConnectParams& params);
+
+}  // namespace demoplan
