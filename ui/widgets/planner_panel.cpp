@@ -75,13 +75,15 @@ PlannerPanel::PlannerPanel(Document* doc, QWidget* parent) : QWidget(parent), do
                              "Smaller is safer and slower. Default %1 rad.").arg(defaults.resolution));
   addField(tr("Resolution"), resolution_);
   shortcut_ = new QCheckBox(tr("Shorten the path for"), this);
-  shortcut_->setToolTip(tr("Replace detours by straight moves where they stay collision-free; a shortened path "
-                           "that the validator rejects is dropped for the original."));
+  shortcut_->setToolTip(tr("Replace detours by straight moves where they stay collision-free, after cutting out "
+                           "any grasp that only puts a part back where it was; a shortened path that the "
+                           "validator rejects is dropped for the original."));
   shortcut_time_ = new QDoubleSpinBox(this);
   shortcut_time_->setRange(0, 60);
   shortcut_time_->setDecimals(1);
   shortcut_time_->setSuffix(QStringLiteral(" s"));
-  shortcut_time_->setToolTip(tr("Time spent shortening the path. Default 1 s."));
+  shortcut_time_->setToolTip(tr("Time spent on straight shortcuts. Default 1 s. Cutting out a put-back grasp "
+                                "takes up to 1 s more each."));
   form->addWidget(shortcut_, cell / 2 + 1, 0, 1, 2);
   form->addWidget(shortcut_time_, cell / 2 + 1, 2, 1, 1);
   form->setColumnStretch(1, 1);
