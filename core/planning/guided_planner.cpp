@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <map>
 #include <queue>
 #include <random>
@@ -423,16 +422,7 @@ private:
   // the benchmark's samples (PlannerParams::final_check), -1 when there is none.
   int check_path(const Path& path) {
     const PathInterpolator interp(scene_, path);
-    std::set<double> ts;
-    const int n = static_cast<int>(std::ceil((1.0 + params_.check_delta) / params_.check_delta));
-    for (int k = 0; k < n; ++k) ts.insert(std::min(1.0, k * params_.check_delta));
-    if (interp.length() > 0) {
-      for (size_t k = 0; k + 1 < path.waypoints.size(); ++k) {
-        const double a = interp.waypoint_parameter(k), b = interp.waypoint_parameter(k + 1);
-        const int steps = static_cast<int>(std::ceil((b - a) * interp.length() / params_.check_max_step));
-        for (int i = 0; i <= steps; ++i) ts.insert(a + (b - a) * i / std::max(steps, 1));
-      }
-    }
+    const std::vector<double> ts = interp.sample_parameters(params_.check_delta, params_.check_max_step);
     long count = 0;
     for (const double t : ts) {
       if (++count % 64 == 0) {

@@ -1,6 +1,8 @@
 #include "core/planning/path_interpolation.h"
 
 #include <algorithm>
+#include <cmath>
+#include <set>
 
 #include "core/model/kinematics.h"
 
@@ -77,6 +79,20 @@ SceneState PathInterpolator::on_segment(size_t k, const Eigen::VectorXd& q, doub
     }
   }
   return s;
+}
+
+std::vector<double> PathInterpolator::sample_parameters(double delta, double max_step) const {
+  std::set<double> ts;
+  const int n = static_cast<int>(std::ceil((1.0 + delta) / delta));
+  for (int k = 0; k < n; ++k) ts.insert(std::min(1.0, k * delta));
+  if (total_ > 0) {
+    for (size_t k = 0; k + 1 < path_.waypoints.size(); ++k) {
+      const double a = waypoint_parameter(k), b = waypoint_parameter(k + 1);
+      const int steps = static_cast<int>(std::ceil((b - a) * total_ / max_step));
+      for (int i = 0; i <= steps; ++i) ts.insert(a + (b - a) * i / std::max(steps, 1));
+    }
+  }
+  return {ts.begin(), ts.end()};
 }
 
 }  // namespace demoplan

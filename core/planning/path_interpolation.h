@@ -24,6 +24,10 @@ public:
   double length() const { return total_; }
   // Parameter of waypoint k.
   double waypoint_parameter(size_t k) const { return total_ > 0 ? cumulative_[k] / total_ : 0.0; }
+  // Where the path is checked: the benchmark's grid t = k * delta (numpy.arange(0, 1 + delta,
+  // delta), capped at 1) plus enough points per segment that consecutive samples are at most
+  // `max_step` apart in joint space. Sorted, without duplicates.
+  std::vector<double> sample_parameters(double delta, double max_step) const;
   // Objects that move across a segment without keeping their pose to any robot link: a
   // teleport. Empty for a well-formed path; (segment, object) pairs otherwise.
   const std::vector<std::pair<int, int>>& uncarried() const { return uncarried_; }

@@ -58,22 +58,6 @@ std::string at(double t) {
   return s.str();
 }
 
-// The sample parameters: the benchmark's grid plus enough points that consecutive samples are
-// at most `max_joint_step` apart in joint space.
-std::vector<double> sample_parameters(const PathInterpolator& path, const Path& p, const ValidationOptions& o) {
-  std::set<double> ts;
-  const int n = static_cast<int>(std::ceil((1.0 + o.delta) / o.delta));
-  for (int k = 0; k < n; ++k) ts.insert(std::min(1.0, k * o.delta));
-  if (path.length() > 0) {
-    for (size_t k = 0; k + 1 < p.waypoints.size(); ++k) {
-      const double a = path.waypoint_parameter(k), b = path.waypoint_parameter(k + 1);
-      const int steps = static_cast<int>(std::ceil((b - a) * path.length() / o.max_joint_step));
-      for (int i = 0; i <= steps; ++i) ts.insert(a + (b - a) * i / std::max(steps, 1));
-    }
-  }
-  return {ts.begin(), ts.end()};
-}
-
 struct GraspPair {
   int object, handle;
   bool operator<(const GraspPair& o) const { return std::tie(object, handle) < std::tie(o.object, o.handle); }
@@ -96,7 +80,7 @@ ValidationReport validate_path(const Scene& scene, const ValidationTask& task, c
     if (w.q.size() != scene.robot.model.nq || w.objects.size() != n_objects)
       return fail("a waypoint does not match the scene (configuration or object count)", -1);
   const PathInterpolator interp(scene, path);
-  const std::vector<double> ts = sample_parameters(interp, path, o);
+  const std::vector<double> ts = interp.sample_parameters(o.delta, o.max_joint_step);
   r.samples = ts.size();
   // The benchmark's compute_lengths on its own grid.
   const int n = static_cast<int>(std::ceil((1.0 + o.delta) / o.delta));
