@@ -32,33 +32,6 @@ std::vector<std::string> DeckPlacementReport::notes() const {
 
 namespace {
 
-// The grasp states of one pick with their two transitions, and the placements around it.
-struct Pick {
-  int from = -1, to = -1;  // placement states
-  std::vector<int> handles, grasp, release;  // per grasp state: handle, grasp and release transition
-};
-
-std::vector<Pick> picks_of(const ConstraintGraph& g) {
-  std::vector<Pick> picks;
-  for (size_t s = 0; s < g.states.size(); ++s) {
-    const GraphState& st = g.states[s];
-    if (st.kind != StateKind::Grasp) continue;
-    if (st.step >= static_cast<int>(picks.size())) picks.resize(st.step + 1);
-    Pick& p = picks[st.step];
-    int grasp = -1, release = -1;
-    for (size_t t = 0; t < g.transitions.size(); ++t) {
-      const GraphTransition& tr = g.transitions[t];
-      if (tr.kind == TransitionKind::Grasp && tr.to == static_cast<int>(s)) grasp = static_cast<int>(t), p.from = tr.from;
-      if (tr.kind == TransitionKind::Release && tr.from == static_cast<int>(s)) release = static_cast<int>(t), p.to = tr.to;
-    }
-    if (grasp < 0 || release < 0) continue;
-    p.handles.push_back(st.handle);
-    p.grasp.push_back(grasp);
-    p.release.push_back(release);
-  }
-  return picks;
-}
-
 // Index of the pick an event belongs to: its grasp, or the grasp before its release.
 int pick_of_event(const Demonstration& d, int e) {
   int grasps = 0;
@@ -98,7 +71,7 @@ struct Candidate {
 class Chooser {
 public:
   Chooser(const Scene& scene, Demonstration& demo, const DeckPlacementOptions& o)
-      : scene_(scene), demo_(demo), o_(o), graph_(build_constraint_graph(scene, demo)), picks_(picks_of(graph_)),
+      : scene_(scene), demo_(demo), o_(o), graph_(build_constraint_graph(scene, demo)),
         projector_(scene, graph_), checker_(scene), validity_(scene, graph_, checker_), data_(checker_.make_data()),
         identity_links_(scene.robot.model.links.size(), Pose::Identity()) {
     for (size_t f = 0; f < scene.furniture.size(); ++f)
@@ -148,8 +121,8 @@ private:
   }
 
   int placement_state(int position) const {
-    if (picks_.empty()) return graph_.start_state;
-    return position < static_cast<int>(picks_.size()) ? picks_[position].from : picks_.back().to;
+    if (graph_.picks.empty()) return graph_.start_state;
+    return position < static_cast<int>(graph_.picks.size()) ? graph_.picks[position].from : graph_.picks.back().to;
   }
 
   void find_rests() {
@@ -201,7 +174,7 @@ private:
 
     std::set<int> states;
     for (int pos = r.position_on; pos <= r.position_off; ++pos) states.insert(placement_state(pos));
-    for (int k = r.position_on; k <= std::min(r.position_off, static_cast<int>(picks_.size()) - 1); ++k)
+    for (int k = r.position_on; k <= std::min(r.position_off, static_cast<int>(graph_.picks.size()) - 1); ++k)
       for (size_t g = 0; g < graph_.states.size(); ++g)
         if (graph_.states[g].kind == StateKind::Grasp && graph_.states[g].step == k) states.insert(static_cast<int>(g));
     r.states.assign(states.begin(), states.end());
@@ -239,11 +212,11 @@ private:
     Rest& rest = rests_[r];
     for (size_t e = 0; e < rest.ends.size(); ++e) {
       const DeckEnd& end = rest.ends[e];
-      const Pick& p = picks_[end.pick];
-      std::vector<double> rates(p.handles.size(), 0.0);
+      const GraphPick& p = graph_.picks[end.pick];
+      std::vector<double> rates(p.grasp_states.size(), 0.0);
       const int other_state = end.release ? p.from : p.to;
       const bool on_robot = graph_.states[other_state].objects[rest.out.object].link >= 0;
-      for (size_t h = 0; h < p.handles.size(); ++h) {
+      for (size_t h = 0; h < p.grasp_states.size(); ++h) {
         if (on_robot) {  // moved from one robot surface to another: judged at the deck ends
           rates[h] = 1.0;
           continue;
@@ -261,10 +234,10 @@ private:
   EndScore score_end(const DeckEnd& end, bool screen, std::mt19937_64& rng, int samples = 0) {
     if (samples <= 0) samples = o_.samples;
     const Rest& rest = rests_[end.rest];
-    const Pick& p = picks_[end.pick];
+    const GraphPick& p = graph_.picks[end.pick];
     const size_t e = &end - rest.ends.data();
     const std::vector<double>& other = rest.other[e];
-    std::vector<size_t> order(p.handles.size());
+    std::vector<size_t> order(p.grasp_states.size());
     for (size_t h = 0; h < order.size(); ++h) order[h] = h;
     std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return other[a] > other[b]; });
     EndScore best;
@@ -452,8 +425,8 @@ private:
     for (size_t k = 0; k < best_scores.size() && k < rest.ends.size(); ++k) {
       const DeckEnd& e = rest.ends[k];
       if (best_scores[k].handle < 0) continue;
-      const Pick& p = picks_[e.pick];
-      const std::string handle = scene_.objects[out.object].srdf.handles[p.handles[best_scores[k].handle]].name;
+      const GraphPick& p = graph_.picks[e.pick];
+      const std::string handle = scene_.objects[out.object].srdf.handles[graph_.states[p.grasp_states[best_scores[k].handle]].handle].name;
       (e.release ? out.handle_on : out.handle_off) = handle;
     }
     set_pose(r, out.chosen);
@@ -492,7 +465,6 @@ private:
   Demonstration& demo_;
   DeckPlacementOptions o_;
   ConstraintGraph graph_;
-  std::vector<Pick> picks_;
   ConstraintProjector projector_;
   CollisionChecker checker_;
   StateValidity validity_;

@@ -119,10 +119,12 @@ ConstraintGraph build_constraint_graph(const Scene& scene, const Demonstration& 
     after[o] = placement_of(release, o);
     const int next = add_placement(after, pick + 1);
     const auto& handles = scene.objects[o].srdf.handles;
-    int usable = 0;
+    GraphPick gp;
+    gp.object = o;
+    gp.from = current;
+    gp.to = next;
     for (size_t h = 0; h < handles.size(); ++h) {
       if (handles[h].clearance > opening) continue;  // wider than the gripper opens
-      ++usable;
       GraphState gs;
       gs.kind = StateKind::Grasp;
       gs.name = "G" + std::to_string(pick) + " " + scene.objects[o].id + "/" + handles[h].name;
@@ -136,11 +138,15 @@ ConstraintGraph build_constraint_graph(const Scene& scene, const Demonstration& 
                                g.states[current].name + " -> " + g.states[gi].name});
       g.transitions.push_back({TransitionKind::Release, gi, next, o, static_cast<int>(h),
                                g.states[gi].name + " -> " + g.states[next].name});
+      gp.grasp_states.push_back(gi);
+      gp.grasp.push_back(static_cast<int>(g.transitions.size()) - 2);
+      gp.release.push_back(static_cast<int>(g.transitions.size()) - 1);
     }
-    if (usable == 0)
+    if (gp.grasp_states.empty())
       throw InputError(source, "events[" + std::to_string(i) + "]",
                        scene.objects[o].id + " has no handle the gripper can open around (clearance <= " +
                            std::to_string(opening) + " m)");
+    g.picks.push_back(std::move(gp));
     current = next;
     ++pick;
   }

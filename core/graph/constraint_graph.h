@@ -46,10 +46,21 @@ struct GraphTransition {
   int edge_state() const { return kind == TransitionKind::Grasp ? from : to; }
 };
 
+// Pick k of the demonstration in the graph: the placements before and after it, and its grasp
+// states (one per handle of the moved object the gripper can open around), each with the
+// transition into it and the one out of it.
+struct GraphPick {
+  int object = -1;
+  int from = -1, to = -1;         // placement states
+  std::vector<int> grasp_states;  // states
+  std::vector<int> grasp, release;  // transitions, parallel to grasp_states
+};
+
 struct ConstraintGraph {
   std::vector<GraphState> states;
   std::vector<GraphTransition> transitions;
   std::vector<int> placement_sequence;  // placement states in demonstration order
+  std::vector<GraphPick> picks;         // in demonstration order
   int start_state = -1, goal_state = -1;
   Eigen::VectorXd q_start, q_goal;
   // Joints moved to reach a handle (all but the gripper's own), and the gripper's own joints,

@@ -59,29 +59,24 @@ FeasibilityReport assess_picks(const Scene& scene, const ConstraintGraph& graph,
   }
 
   // Group by pick: the grasp states of pick k, each with its grasp and release transitions.
-  const int picks = static_cast<int>(graph.placement_sequence.size()) - 1;
-  for (int k = 0; k < picks; ++k) {
+  for (size_t k = 0; k < graph.picks.size(); ++k) {
+    const GraphPick& gp = graph.picks[k];
     PickFeasibility p;
-    p.pick = k;
-    for (size_t g = 0; g < graph.states.size(); ++g) {
-      const GraphState& state = graph.states[g];
-      if (state.kind != StateKind::Grasp || state.step != k) continue;
-      p.object = state.object;
-      const TransitionSampling *grasp = nullptr, *release = nullptr;
-      for (size_t i = 0; i < graph.transitions.size(); ++i) {
-        const GraphTransition& t = graph.transitions[i];
-        if (t.kind == TransitionKind::Grasp && t.to == static_cast<int>(g)) grasp = &r.transitions[i];
-        if (t.kind == TransitionKind::Release && t.from == static_cast<int>(g)) release = &r.transitions[i];
-      }
+    p.pick = static_cast<int>(k);
+    p.object = gp.object;
+    for (size_t w = 0; w < gp.grasp_states.size(); ++w) {
+      const GraphState& state = graph.states[gp.grasp_states[w]];
+      const TransitionSampling& grasp = r.transitions[gp.grasp[w]];
+      const TransitionSampling& release = r.transitions[gp.release[w]];
       const std::string handle = scene.objects[state.object].srdf.handles[state.handle].name;
-      if (grasp && release && grasp->collision_free > 0 && release->collision_free > 0) {
+      if (grasp.collision_free > 0 && release.collision_free > 0) {
         p.handles.push_back(handle);
         continue;
       }
       std::string why;
-      if (!grasp || grasp->collision_free == 0) why += "grasp: " + (grasp ? grasp->main_failure() : "no transition");
-      if (!release || release->collision_free == 0)
-        why += std::string(why.empty() ? "" : ", ") + "release: " + (release ? release->main_failure() : "no transition");
+      if (grasp.collision_free == 0) why += "grasp: " + grasp.main_failure();
+      if (release.collision_free == 0)
+        why += std::string(why.empty() ? "" : ", ") + "release: " + release.main_failure();
       p.reason += (p.reason.empty() ? "" : "; ") + handle + " (" + why + ")";
     }
     if (p.feasible()) p.reason.clear();
