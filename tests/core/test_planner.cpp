@@ -6,33 +6,15 @@
 #include <random>
 #include <thread>
 
-#include "core/demo/benchmark_demonstration.h"
-#include "core/demo/benchmark_scene.h"
 #include "core/planning/solve.h"
+#include "tests/core/planning_problem.h"
 
 using namespace demoplan;
 
-static const std::string kData = DEMOPLAN_DATA_DIR;
-
 namespace {
 
-struct Problem {
-  BenchmarkTask task;
-  Scene scene;
-  ConstraintGraph graph;
-  std::unique_ptr<CollisionChecker> checker;
-  ValidationTask vtask;
-
-  Problem(const std::string& name, const std::string& robot, int pose)
-      : task(load_benchmark_task(kData, name)), scene(build_benchmark_scene(task, robot, pose)) {
-    graph = build_constraint_graph(scene, demonstration_from_benchmark(task, scene, PoseSource::Subgoals));
-    checker = std::make_unique<CollisionChecker>(scene);
-    vtask = validation_task(task, scene);
-  }
-};
-
-Problem& shelf0() {
-  static Problem p("shelf_0", "panda", 1);
+PlanningProblem& shelf0() {
+  static PlanningProblem p("shelf_0", "panda", 1);
   return p;
 }
 
@@ -46,7 +28,7 @@ PlannerParams params(std::uint64_t seed, double time_limit = 30.0) {
 // A solved path of shelf_0 (one object) for the corruption tests.
 const Path& solved_path() {
   static const Path path = [] {
-    Problem& p = shelf0();
+    PlanningProblem& p = shelf0();
     PlanResult r = plan_guided(p.scene, p.graph, *p.checker, params(1));
     EXPECT_TRUE(r.solved) << r.message;
     return r.path;
@@ -63,7 +45,7 @@ size_t first_with_action(const Path& p, GripperAction a) {
 }  // namespace
 
 TEST(GuidedPlanner, SolvesAOneObjectShelfTaskWithAValidPath) {
-  Problem& p = shelf0();
+  PlanningProblem& p = shelf0();
   const Path& path = solved_path();
   const ValidationReport v = validate_path(p.scene, p.vtask, path);
   EXPECT_TRUE(v.valid) << v.message;
@@ -77,7 +59,7 @@ TEST(GuidedPlanner, SolvesAOneObjectShelfTaskWithAValidPath) {
 }
 
 TEST(GuidedPlanner, TheSameSeedGivesTheSamePathBitForBit) {
-  Problem& p = shelf0();
+  PlanningProblem& p = shelf0();
   const PlanResult a = plan_guided(p.scene, p.graph, *p.checker, params(7));
   const PlanResult b = plan_guided(p.scene, p.graph, *p.checker, params(7));
   ASSERT_TRUE(a.solved && b.solved);
@@ -96,7 +78,7 @@ TEST(GuidedPlanner, TheSameSeedGivesTheSamePathBitForBit) {
 TEST(GuidedPlanner, CancelStopsWithin100ms) {
   // shelf_1 with Panda at pose 0 has no solution (YCBV_05 cannot be released on the table from
   // this base pose): the planner would run to its time limit.
-  Problem p("shelf_1", "panda", 0);
+  PlanningProblem p("shelf_1", "panda", 0);
   std::atomic<bool> cancel{false};
   std::chrono::steady_clock::time_point cancelled_at;
   std::thread canceller([&] {
@@ -114,7 +96,7 @@ TEST(GuidedPlanner, CancelStopsWithin100ms) {
 }
 
 TEST(GuidedPlanner, ReportsProgressAtLeastTenTimesASecond) {
-  Problem p("shelf_1", "panda", 0);
+  PlanningProblem p("shelf_1", "panda", 0);
   PlannerParams pp = params(1, 1.0);
   std::vector<PlannerProgress> snapshots;
   size_t edges = 0;
@@ -137,7 +119,7 @@ TEST(GuidedPlanner, ReportsProgressAtLeastTenTimesASecond) {
 // Edges checked far too coarsely (every 0.4 rad) cut through obstacles; the final check at the
 // benchmark's sampling must catch those paths and planning must go on to a valid one.
 TEST(GuidedPlanner, TheFinalCheckRejectsPathsThatPassThroughObstacles) {
-  Problem p("shelf_1", "panda", 1);
+  PlanningProblem p("shelf_1", "panda", 1);
   int invalid_unchecked = 0, rejected = 0;
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     PlannerParams coarse = params(seed);

@@ -2,34 +2,16 @@
 // detours in which the planner grasps a part and puts it back unmoved.
 #include <gtest/gtest.h>
 
-#include "core/demo/benchmark_demonstration.h"
-#include "core/demo/benchmark_scene.h"
 #include "core/planning/planner.h"
 #include "core/planning/shortcut.h"
 #include "core/validation/path_validator.h"
+#include "tests/core/planning_problem.h"
 
 using namespace demoplan;
 
-static const std::string kData = DEMOPLAN_DATA_DIR;
-
 namespace {
 
-struct Problem {
-  BenchmarkTask task;
-  Scene scene;
-  ConstraintGraph graph;
-  std::unique_ptr<CollisionChecker> checker;
-  ValidationTask vtask;
-
-  Problem(const std::string& name, const std::string& robot, int pose)
-      : task(load_benchmark_task(kData, name)), scene(build_benchmark_scene(task, robot, pose)) {
-    graph = build_constraint_graph(scene, demonstration_from_benchmark(task, scene, PoseSource::Subgoals));
-    checker = std::make_unique<CollisionChecker>(scene);
-    vtask = validation_task(task, scene);
-  }
-};
-
-// Every straight move (a run of approach segments) of `before`, as its configurations.
+// Every straight move (a run of approach segments) of `p`, as its configurations.
 std::vector<std::vector<Eigen::VectorXd>> straight_moves(const Path& p) {
   std::vector<std::vector<Eigen::VectorXd>> moves;
   const auto& w = p.waypoints;
@@ -67,7 +49,7 @@ ShortcutParams shortcut_params() {
 }  // namespace
 
 TEST(Shortcut, ShortensAndKeepsThePathValidWithItsApproaches) {
-  Problem p("shelf_1", "panda", 1);
+  PlanningProblem p("shelf_1", "panda", 1);
   PlannerParams pp;
   pp.seed = 1;
   const PlanResult r = plan_guided(p.scene, p.graph, *p.checker, pp);
@@ -81,14 +63,16 @@ TEST(Shortcut, ShortensAndKeepsThePathValidWithItsApproaches) {
   EXPECT_TRUE(v.valid) << v.message;
   EXPECT_EQ(v.grasps, 2);
   // The gripper still reaches and leaves every part along the same straight lines.
-  if (s.detours_removed == 0) EXPECT_TRUE(contains_in_order(path, straight_moves(r.path)));
+  if (s.detours_removed == 0) {
+    EXPECT_TRUE(contains_in_order(path, straight_moves(r.path)));
+  }
 }
 
 TEST(Shortcut, CutsOutAGraspThatPutsThePartBackUnmoved) {
   // The planner can link two trees of a placement state through a grasp state: the path grasps
   // a part and puts it back where it was. Find such a path among a few seeds (seed 1 on this
   // instance has one at the time of writing; the planner is deterministic per seed).
-  Problem p("tunnel_0", "panda", 3);
+  PlanningProblem p("tunnel_0", "panda", 3);
   const int picks = 2;
   Path detour;
   int before = 0;
