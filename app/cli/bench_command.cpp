@@ -21,8 +21,9 @@
 #include "core/demo/benchmark_demonstration.h"
 #include "core/error.h"
 #include "core/io/json_file.h"
-#include "core/graph/pick_feasibility.h"
-#include "core/planning/solve.h"
+#include "core/placement/deck_placement.h"
+#include "core/planning/plan_job.h"
+#include "core/planning/planner_registry.h"
 
 namespace demoplan::cli {
 
@@ -36,6 +37,7 @@ struct BenchOptions {
   double time_limit = 60.0;
   double waiter_time_limit = 300.0;
   std::string from = "subgoals";
+  std::string planner = "guided";
   int jobs = 1;
   std::string out, ompl_log, data_dir;
   bool json = false;
@@ -69,6 +71,7 @@ std::vector<int> int_range(const std::string& s, const std::string& option) {
 }
 
 struct Run {
+  std::string planner;
   std::string task, robot;
   int pose = 0, seed = 0;
   double time_limit = 60;
@@ -84,19 +87,12 @@ struct Run {
 };
 
 struct Instance {
-  BenchmarkTask task;
-  Scene scene;
-  Demonstration demo;
-  std::unique_ptr<ConstraintGraph> graph;
-  std::unique_ptr<CollisionChecker> checker;
-  ValidationTask vtask;
+  PlanningProblem problem;
   // After the first failed run: can every pick be done from this base pose at all?
   std::once_flag assessed;
   bool infeasible = false;
   std::string infeasible_reason;
 };
-
-constexpr int kFeasibilitySamples = 100;  // per transition
 
 double median(std::vector<double> v) {
   if (v.empty()) return std::nan("");
@@ -121,7 +117,7 @@ void write_ompl_log(const std::string& file, const std::string& experiment, cons
       << time_limit << " seconds per run\n0 MB per run\n" << runs.size() << " runs per planner\n"
       << total_s << " seconds spent to collect the data\n0 enum types\n2 planners\n";
   for (int planner = 0; planner < 2; ++planner) {
-    out << (planner == 0 ? "guided" : "guided+shortcut") << "\n0 common properties\n"
+    out << (planner == 0 ? runs.front()->planner : runs.front()->planner + "+shortcut") << "\n0 common properties\n"
         << "9 properties for each run\ntime REAL\nsolved BOOLEAN\ncorrect solution BOOLEAN\nsolution length REAL\n"
            "object translation REAL\nobject rotation REAL\ngrasps INTEGER\ngraph states INTEGER\nseed INTEGER\n"
         << runs.size() << " runs\n";
@@ -148,17 +144,16 @@ int run_bench(const BenchOptions& o) {
       const std::vector<int> available = benchmark_pose_ids(task, robot);
       for (int pose : poses) {
         if (std::find(available.begin(), available.end(), pose) == available.end()) continue;
+        auto scene = std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose));
+        const Demonstration demo = place_on_deck(*scene, demonstration_from_benchmark(
+            task, *scene, o.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals)).demonstration;
+        ValidationTask vtask = o.from == "raw" ? validation_task(demo, *scene) : validation_task(task, *scene);
         auto in = std::make_unique<Instance>();
-        in->task = task;
-        in->scene = build_benchmark_scene(task, robot, pose);
-        in->demo = demonstration_from_benchmark(task, in->scene, o.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals);
-        in->graph = std::make_unique<ConstraintGraph>(build_constraint_graph(in->scene, in->demo));
-        in->checker = std::make_unique<CollisionChecker>(in->scene);
-        in->vtask = o.from == "raw" ? validation_task(in->demo, in->scene) : validation_task(task, in->scene);
+        in->problem = make_planning_problem(scene, demo, std::move(vtask));
         instances[{task_name, robot, pose}] = std::move(in);
         for (int seed : seeds) {
           Run& r = runs.emplace_back();
-          r.task = task_name, r.robot = robot, r.pose = pose, r.seed = seed;
+          r.planner = o.planner, r.task = task_name, r.robot = robot, r.pose = pose, r.seed = seed;
           r.time_limit = task.task_name == "waiter" ? o.waiter_time_limit : o.time_limit;
         }
       }
@@ -177,11 +172,11 @@ int run_bench(const BenchOptions& o) {
       }
       Run& r = runs[i];
       Instance& in = *instances.at({r.task, r.robot, r.pose});
-      SolveParams sp;
-      sp.planner.seed = static_cast<std::uint64_t>(r.seed);
-      sp.planner.time_limit = r.time_limit;
-      sp.shortcut = false;
-      SolveResult s = solve(in.scene, *in.graph, *in.checker, in.vtask, sp);
+      PlannerSettings settings;
+      settings.planner_name = o.planner;
+      settings.planner.seed = static_cast<std::uint64_t>(r.seed);
+      settings.planner.time_limit = r.time_limit;
+      const PlanReport s = run_plan_job(in.problem, settings, {}, nullptr, {.assess_on_failure = false});
       r.solved = s.plan.solved;
       r.time_s = s.plan.planning_time_s;
       r.iterations = s.plan.iterations;
@@ -190,19 +185,16 @@ int run_bench(const BenchOptions& o) {
       r.message = s.plan.message;
       if (!r.solved)
         std::call_once(in.assessed, [&] {
-          const FeasibilityReport f = assess_picks(in.scene, *in.graph, *in.checker, kFeasibilitySamples);
+          PlannerSettings once = settings;
+          once.planner.seed = 1;  // the same answer whichever run fails first
+          const FeasibilityReport f = assess_problem(in.problem, once);
           in.infeasible = !f.feasible();
-          in.infeasible_reason = f.summary(in.scene);
+          in.infeasible_reason = f.summary(*in.problem.scene);
         });
       if (r.solved) {
-        r.raw = s.validation;
-        Path shorter = s.plan.path;
-        ShortcutParams shp;
-        shp.seed = sp.planner.seed;
-        const ShortcutResult sh = shortcut_path(in.scene, *in.graph, *in.checker, shorter, shp);
-        r.shortcut_s = sh.time_s;
-        r.shortened = validate_path(in.scene, in.vtask, shorter);
-        if (!r.shortened.valid) r.shortened = r.raw;  // as solve() does: keep the planner's path
+        r.raw = s.planner_validation;
+        r.shortcut_s = s.shortcut.time_s;
+        r.shortened = s.validation;  // the planner's own path when the shortened one was dropped
       }
       std::lock_guard lock(mutex);
       ++done;
@@ -239,7 +231,7 @@ int run_bench(const BenchOptions& o) {
         lengths.push_back(v.length.robot);
         grasps.push_back(v.grasps);
       }
-      const std::string name = planner == 0 ? "guided" : "guided+shortcut";
+      const std::string name = planner == 0 ? o.planner : o.planner + "+shortcut";
       const double rate = static_cast<double>(solved) / static_cast<double>(group.size());
       const double feasible_rate = feasible ? static_cast<double>(solved) / feasible : std::nan("");
       rows.push_back({{"task", key.first}, {"robot", key.second}, {"planner", name},
@@ -297,6 +289,8 @@ Command register_bench_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--from", opts->from, "object poses from the cleaned key poses or the raw video estimates")
       ->check(CLI::IsMember({"raw", "subgoals"}))->capture_default_str();
+  sub->add_option("--planner", opts->planner, "planner by name")
+      ->check(CLI::IsMember(planner_names()))->capture_default_str();
   sub->add_option("--jobs", opts->jobs, "runs in parallel")->check(CLI::PositiveNumber)->capture_default_str();
   sub->add_option("--out", opts->out, "write every run and the table as JSON");
   sub->add_option("--ompl-log", opts->ompl_log, "also write OMPL benchmark logs, one per task and robot");

@@ -1,5 +1,5 @@
-// demoplan-cli plan: the guided planner on a benchmark task, the path validated by the
-// independent validator, optionally shortened and saved.
+// demoplan-cli plan: the plan job (core/planning/plan_job.h) on a benchmark task: the chosen
+// planner, shortcutting, the independent validator, and after a failure the reason.
 #include <iostream>
 #include <memory>
 
@@ -8,41 +8,39 @@
 #include "app/cli/command.h"
 #include "app/cli/task_inputs.h"
 #include "core/graph/graph_description.h"
-#include "core/planning/solve.h"
+#include "core/planning/plan_job.h"
+#include "core/planning/planner_registry.h"
 
 namespace demoplan::cli {
 
 namespace {
 
-constexpr int kFeasibilitySamples = 100;  // per transition, after a failed plan
-
 struct PlanOptions {
   TaskInputs inputs;
-  PlannerParams params;
+  PlannerSettings settings;
   bool no_shortcut = false;
-  double shortcut_time = 1.0;
   std::string out;
   bool json = false;
 };
 
 int run_plan(const PlanOptions& o) {
   const LoadedTask t = load_task_inputs(o.inputs);
-  const ConstraintGraph graph = build_constraint_graph(t.scene, t.demo);
-  const CollisionChecker checker(t.scene);
   // Cleaned demonstrations are judged against the benchmark's own start and goal; a plan from
   // the raw video estimates against the start and goal those estimates give.
   const ValidationTask vt = o.inputs.from == "raw" ? validation_task(t.demo, t.scene) : validation_task(t.task, t.scene);
-  SolveParams sp;
-  sp.planner = o.params;
-  sp.shortcut = !o.no_shortcut;
-  sp.shortcutting.time_limit = o.shortcut_time;
-  SolveResult s = solve(t.scene, graph, checker, vt, sp);
+  const PlanningProblem problem = make_planning_problem(std::make_shared<const Scene>(t.scene), t.demo, vt);
+  const ConstraintGraph& graph = *problem.graph;
+  PlannerSettings settings = o.settings;
+  settings.shortcut = !o.no_shortcut;
+  const PlanReport s = run_plan_job(problem, settings);
   const PlanResult& r = s.plan;
+  const std::uint64_t seed = settings.planner.seed;
   nlohmann::json j{{"task", o.inputs.task},  {"robot", o.inputs.robot},    {"pose", o.inputs.pose},
-                   {"seed", o.params.seed},   {"from", o.inputs.from},      {"solved", r.solved},
+                   {"planner", s.planner},
+                   {"seed", seed},            {"from", o.inputs.from},      {"solved", r.solved},
                    {"planning_time_s", r.planning_time_s}, {"iterations", r.iterations},
                    {"trees", r.trees},        {"nodes", r.nodes}};
-  std::cerr << t.scene.name << ", seed " << o.params.seed << ": "
+  std::cerr << t.scene.name << ", " << s.planner << ", seed " << seed << ": "
             << (r.solved ? "solved" : "not solved: " + r.message) << " in " << r.planning_time_s << " s, "
             << r.iterations << " iterations, " << r.trees << " trees, " << r.nodes << " nodes\n";
   if (!r.solved) {
@@ -55,7 +53,7 @@ int run_plan(const PlanOptions& o) {
                 << graph.transitions.size() << "\n";
     }
     // Say whether the demonstration can be done at all from this base pose, and if not, why.
-    const FeasibilityReport feasibility = assess_picks(t.scene, graph, checker, kFeasibilitySamples, o.params.seed);
+    const FeasibilityReport& feasibility = *s.feasibility;
     j["picks"] = describe_picks(t.scene, feasibility);
     j["feasible"] = feasibility.feasible();
     std::cerr << (feasibility.feasible() ? "  every pick has a handle that grasps and releases collision-free\n"
@@ -63,11 +61,11 @@ int run_plan(const PlanOptions& o) {
     if (o.json) std::cout << j.dump() << std::endl;
     return kFailed;
   }
-  Path path = r.path;
+  Path path = s.path;
   path.task = o.inputs.task;
   path.robot = o.inputs.robot;
   path.robot_pose = o.inputs.pose;
-  if (sp.shortcut) {
+  if (settings.shortcut) {
     std::cerr << "  shortcut: " << s.shortcut.length_before << " -> " << s.shortcut.length_after << " rad in "
               << s.shortcut.time_s << " s (" << s.shortcut.accepted << " of " << s.shortcut.attempts << " cuts, "
               << s.shortcut.detours_removed << " put-back detours removed)"
@@ -97,7 +95,10 @@ int run_plan(const PlanOptions& o) {
 
 }  // namespace
 
-void add_planner_options(CLI::App& sub, PlannerParams& p) {
+void add_planner_options(CLI::App& sub, PlannerSettings& s) {
+  PlannerParams& p = s.planner;
+  sub.add_option("--planner", s.planner_name, "planner by name")
+      ->check(CLI::IsMember(planner_names()))->capture_default_str();
   sub.add_option("--seed", p.seed, "random seed; the same seed gives the same path")->capture_default_str();
   sub.add_option("--time-limit", p.time_limit, "planning time limit in seconds")->capture_default_str();
   sub.add_option("--max-iterations", p.max_iterations, "planning iteration limit")->capture_default_str();
@@ -110,11 +111,12 @@ void add_planner_options(CLI::App& sub, PlannerParams& p) {
 
 Command register_plan_command(CLI::App& app) {
   auto opts = std::make_shared<PlanOptions>();
-  CLI::App* sub = app.add_subcommand("plan", "plan a benchmark task with the video-guided planner");
+  CLI::App* sub = app.add_subcommand("plan", "plan a benchmark task (default: the video-guided planner)");
   add_task_inputs(*sub, opts->inputs);
-  add_planner_options(*sub, opts->params);
+  add_planner_options(*sub, opts->settings);
   sub->add_flag("--no-shortcut", opts->no_shortcut, "keep the planner's path as found");
-  sub->add_option("--shortcut-time", opts->shortcut_time, "seconds spent shortening the path")->capture_default_str();
+  sub->add_option("--shortcut-time", opts->settings.shortcutting.time_limit, "seconds spent shortening the path")
+      ->capture_default_str();
   sub->add_option("--out", opts->out, "write the path as JSON");
   sub->add_flag("--json", opts->json, "print one JSON object on stdout");
   return {sub, [opts] { return run_plan(*opts); }};

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "core/demo/benchmark_demonstration.h"
+#include "core/placement/deck_placement.h"
 
 namespace demoplan::cli {
 
@@ -20,9 +21,13 @@ void add_task_inputs(CLI::App& sub, TaskInputs& in, bool with_from) {
 LoadedTask load_task_inputs(const TaskInputs& in) {
   LoadedTask t{load_benchmark_task(in.data_dir, in.task), {}, {}};
   t.scene = build_benchmark_scene(t.task, in.robot, in.pose);
-  DeckPlacementReport deck;
-  t.demo = demonstration_from_benchmark(t.task, t.scene, in.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals, &deck);
-  // Objects riding on the robot: say where they ride when it is not where the demonstrator put them.
+  const Demonstration demonstrated =
+      demonstration_from_benchmark(t.task, t.scene, in.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals);
+  // Objects riding on the robot: choose where, and say so when it is not where the demonstrator
+  // put them.
+  DeckPlacement placed = place_on_deck(t.scene, demonstrated);
+  t.demo = std::move(placed.demonstration);
+  const DeckPlacementReport& deck = placed.report;
   if (!deck.rests.empty()) {
     std::cerr << "deck poses chosen in " << static_cast<int>(deck.seconds * 1000) << " ms:\n";
     for (const auto& note : deck.notes()) std::cerr << "  " << note << "\n";

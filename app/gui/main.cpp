@@ -30,11 +30,11 @@ int createProject(const QString& spec, const QString& video, const QString& came
     demoplan::ui::Document doc(data_dir);
     for (const auto& note : doc.newFromBenchmark(parts[0].toStdString(), parts[1].toStdString(), pose))
       std::fprintf(stderr, "demoplan: on the robot's deck: %s\n", note.c_str());
-    if (!video.isEmpty()) doc.setVideo(video);
-    if (!camera.isEmpty()) doc.setCamera(camera);
-    if (!markers.isEmpty()) doc.setMarkers(markers);
-    if (!doc.videoError().isEmpty()) throw std::runtime_error(doc.videoError().toStdString());
-    if (!doc.cameraError().isEmpty()) throw std::runtime_error(doc.cameraError().toStdString());
+    if (!video.isEmpty()) doc.media()->setVideo(video);
+    if (!camera.isEmpty()) doc.media()->setCamera(camera);
+    if (!markers.isEmpty()) doc.media()->setMarkers(markers);
+    if (!doc.media()->videoError().isEmpty()) throw std::runtime_error(doc.media()->videoError().toStdString());
+    if (!doc.media()->cameraError().isEmpty()) throw std::runtime_error(doc.media()->cameraError().toStdString());
     doc.saveAs(out);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "demoplan: %s\n", e.what());

@@ -152,8 +152,7 @@ Demonstration demonstration_from_subgoals(const BenchmarkTask& task) {
   return d;
 }
 
-Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scene& scene, PoseSource source,
-                                           DeckPlacementReport* deck) {
+Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scene& scene, PoseSource source) {
   Demonstration d = source == PoseSource::Subgoals ? demonstration_from_subgoals(task) : events_only(task);
   const size_t n = d.object_ids.size();
   if (d.events.empty()) throw InputError(task.file, "contacts", "no object is ever held");
@@ -197,14 +196,8 @@ Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scen
   bool any_frame = false;
   for (const auto& e : d.events)
     for (const auto& f : e.pose_frames) any_frame |= !f.empty();
-  if (!any_frame) {
+  if (!any_frame)
     for (auto& e : d.events) e.pose_frames.clear();
-    if (deck) *deck = {};
-    return d;
-  }
-  // The tray's offsets suit the demonstrator's hand; the robot's arm may need other deck poses.
-  DeckPlacementReport chosen = choose_deck_poses(scene, d);
-  if (deck) *deck = std::move(chosen);
   return d;
 }
 

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "core/demo/benchmark_task.h"
-#include "core/demo/deck_placement.h"
 #include "core/demo/demonstration.h"
 
 namespace demoplan {
@@ -29,14 +28,12 @@ Demonstration demonstration_from_subgoals(const BenchmarkTask& task);
 //    interval snapped onto the furniture surface (raw);
 //  - on nothing the furniture offers while the robot has a surface of its own (waiter: the
 //    demonstrator's tray, the KMR's deck): relative to the robot link carrying that surface,
-//    at the object's offset from the tray centre, snapped onto the surface; then
-//    choose_deck_poses() (deck_placement.h) moves it on the surface where the picks that put it
-//    there and take it off could not be done from that pose. `deck` (optional) receives what it
-//    chose, with a note per object.
+//    at the object's offset from the tray centre, snapped onto the surface. That pose suits a
+//    hand; place_on_deck() (core/placement/deck_placement.h), the next stage, moves it where the
+//    robot's picks can be done.
 // Throws InputError naming the event when an object rests on nothing.
 enum class PoseSource { Subgoals, Raw };
-Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scene& scene, PoseSource source,
-                                           DeckPlacementReport* deck = nullptr);
+Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scene& scene, PoseSource source);
 
 // How far one demonstration's object poses lie from another's (same events), over every
 // (event, object) pair whose pose is in the world in both.

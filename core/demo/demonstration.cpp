@@ -156,10 +156,7 @@ Demonstration load_demonstration(const std::string& path) {
 
 Demonstration demonstration_from_json(const Json& json, const std::string& path) {
   const JsonField root(json, path);
-  if (root["format"].string() != kFormat) root["format"].fail(std::string("expected ") + kFormat);
-  if (root["version"].integer() != kVersion)
-    root["version"].fail("unsupported version " + std::to_string(root["version"].integer()) +
-                         " (this demoplan reads version " + std::to_string(kVersion) + ")");
+  check_format(root, kFormat, kVersion);
   Demonstration d;
   d.task = root["task"].string();
   d.fps = root["fps"].number();

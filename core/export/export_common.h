@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/model/robot_model.h"
-#include "core/planning/path.h"
+#include "core/path/path.h"
 #include "core/trajectory/joint_limits.h"
 #include "core/trajectory/trajectory.h"
 

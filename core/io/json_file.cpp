@@ -123,4 +123,15 @@ Pose JsonField::pose(double rotation_tol) const {
   return T;
 }
 
+void check_format(const JsonField& root, const std::string& format, int version, const std::string& kind) {
+  if (!root.value().is_object()) root.fail("not a demoplan " + (kind.empty() ? format : kind) + " (expected a JSON object)");
+  const JsonField f = root["format"];  // throws when missing
+  if (!f.value().is_string() || f.value().get<std::string>() != format)
+    f.fail((kind.empty() ? std::string() : "not a demoplan " + kind + ": ") + "expected '" + format + "'");
+  const int v = root["version"].integer();
+  if (v != version)
+    root["version"].fail("unsupported " + (kind.empty() ? std::string() : kind + " ") + "version " + std::to_string(v) +
+                         " (this demoplan reads version " + std::to_string(version) + ")");
+}
+
 }  // namespace demoplan

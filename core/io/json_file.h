@@ -47,4 +47,8 @@ private:
   std::string path_;
 };
 
+// Checks the "format" and "version" fields every demoplan file starts with; throws InputError.
+// `kind` (e.g. "project") names the file's kind when its format is another's.
+void check_format(const JsonField& root, const std::string& format, int version, const std::string& kind = "");
+
 }  // namespace demoplan

@@ -8,8 +8,9 @@
 #include "core/graph/projector.h"
 #include "core/graph/state_validity.h"
 #include "core/planning/nearest_neighbors.h"
-#include "core/planning/path_interpolation.h"
-#include "core/planning/planner.h"
+#include "core/path/path_interpolation.h"
+#include "core/planning/guided_planner.h"
+#include "core/planning/path_from_nodes.h"
 
 namespace demoplan {
 
@@ -169,8 +170,8 @@ private:
 class GuidedRrt {
 public:
   GuidedRrt(const Scene& scene, const ConstraintGraph& graph, const CollisionChecker& checker,
-            const PlannerParams& params, const ProgressCallback& progress, const std::atomic<bool>* cancel)
-      : scene_(scene), graph_(graph), checker_(checker), params_(params), progress_(progress), cancel_(cancel),
+            const PlannerParams& params, const ProgressCallback& progress, const StopCondition& stop)
+      : scene_(scene), graph_(graph), checker_(checker), params_(params), progress_(progress), stop_(stop),
         projector_(scene, graph), validity_(scene, graph, checker, params.resolution),
         data_(checker.make_data()), forest_(static_cast<int>(graph.states.size()), scene.robot.model.nq),
         rng_(params.seed), sampled_(graph.transitions.size(), 0),
@@ -245,7 +246,7 @@ private:
     return r;
   }
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_time_).count(); }
-  bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+  bool cancelled() const { return stop_.cancelled(); }
   bool stop_requested(PlanResult& r) {
     if (cancelled()) {
       r.cancelled = true;
@@ -256,8 +257,8 @@ private:
       r.message = "iteration limit (" + std::to_string(params_.max_iterations) + ") reached";
       return true;
     }
-    if (elapsed() >= params_.time_limit) {
-      r.message = "time limit (" + std::to_string(params_.time_limit) + " s) reached";
+    if (stop_.timed_out()) {
+      r.message = "time limit (" + std::to_string(stop_.time_limit_s()) + " s) reached";
       return true;
     }
     return false;
@@ -366,7 +367,7 @@ private:
   void attempt_link(int id) {
     const int state = forest_.node(id).state;
     for (int group : forest_.groups_in(state)) {
-      if (cancelled() || elapsed() >= params_.time_limit) return;
+      if (stop_.should_stop()) return;
       if (forest_.find(group) != group || forest_.find(forest_.node(id).tree) == group) continue;
       const Eigen::VectorXd q = forest_.node(id).q;
       int last = forest_.nearest_in(state, group, q);
@@ -478,7 +479,7 @@ private:
   const CollisionChecker& checker_;
   PlannerParams params_;
   const ProgressCallback& progress_;
-  const std::atomic<bool>* cancel_;
+  const StopCondition& stop_;
   ConstraintProjector projector_;
   StateValidity validity_;
   CollisionData data_;
@@ -498,33 +499,9 @@ private:
 
 }  // namespace
 
-Path make_path(const Scene& scene, const ConstraintGraph& graph, const std::vector<Eigen::VectorXd>& qs,
-               const std::vector<int>& states, const std::vector<char>& approach_to_next) {
-  Path p;
-  for (const Joint* j : scene.robot.model.configuration_joints()) p.joint_names.push_back(j->name);
-  for (const auto& o : scene.objects) p.object_ids.push_back(o.id);
-  for (size_t k = 0; k < qs.size(); ++k) {
-    Waypoint w;
-    w.q = qs[k];
-    w.state = states[k];
-    w.state_name = graph.states[states[k]].name;
-    w.objects = scene_state(scene, graph, states[k], qs[k]).objects;
-    w.approach = approach_to_next[k];
-    const GraphState& s = graph.states[states[k]];
-    // The gripper closes on entering a grasp state and opens on its last node before leaving.
-    if (s.kind == StateKind::Grasp) {
-      if (k > 0 && states[k - 1] != states[k]) w.action = GripperAction::Grasp, w.object = s.object;
-      else if (k + 1 < qs.size() && states[k + 1] != states[k]) w.action = GripperAction::Release, w.object = s.object;
-    }
-    p.waypoints.push_back(std::move(w));
-  }
-  return p;
-}
-
-PlanResult plan_guided(const Scene& scene, const ConstraintGraph& graph, const CollisionChecker& checker,
-                       const PlannerParams& params, const ProgressCallback& progress,
-                       const std::atomic<bool>* cancel) {
-  return GuidedRrt(scene, graph, checker, params, progress, cancel).run();
+PlanResult GuidedPlanner::solve(const PlanningProblem& problem, const StopCondition& stop,
+                                 const ProgressCallback& progress) {
+  return GuidedRrt(*problem.scene, *problem.graph, *problem.checker, params_, progress, stop).run();
 }
 
 }  // namespace demoplan

@@ -1,18 +1,19 @@
 #pragma once
-// The multi-contact RRT guided by the demonstration (Alg. 1 and 2 of the paper): trees rooted
-// at the start and goal configurations, more trees rooted at sampled transitions, each grown in
-// its states and linked to the other trees of the same state until start and goal share a tree.
-#include <atomic>
+// What every planner offers (OMPL's base::Planner): solve a PlanningProblem until it is solved
+// or the StopCondition says stop, reporting progress on the way. The guided planner is one
+// implementation (guided_planner.h); planner_registry.h finds them by name.
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "core/graph/constraint_graph.h"
-#include "core/planning/path.h"
-#include "core/scene/collision_checker.h"
+#include "core/path/path.h"
+#include "core/planning/planning_problem.h"
+#include "core/planning/stop_condition.h"
 
 namespace demoplan {
 
+// The parameters of our sampling planners: the seed, the time limit the plan job turns into
+// its StopCondition, and the guided planner's own.
 struct PlannerParams {
   double eta_sample_tree = 0.1;  // probability of rooting a new tree at a sampled transition
   double step = 0.3;             // delta: tree growth step, joint-space Euclidean (rad, m)
@@ -80,15 +81,15 @@ struct PlanResult {
   std::vector<std::string> unsampled_transitions;
 };
 
-// Plans from graph.q_start in graph.start_state to graph.q_goal in graph.goal_state. The same
-// inputs and seed give the same path, bit for bit. `cancel` is polled at least every few ms.
-PlanResult plan_guided(const Scene& scene, const ConstraintGraph& graph, const CollisionChecker& checker,
-                       const PlannerParams& params, const ProgressCallback& progress = {},
-                       const std::atomic<bool>* cancel = nullptr);
-
-// Builds the Path of a node sequence: object poses from each node's state, gripper actions
-// where the state changes between a placement and a grasp.
-Path make_path(const Scene& scene, const ConstraintGraph& graph, const std::vector<Eigen::VectorXd>& qs,
-               const std::vector<int>& states, const std::vector<char>& approach_to_next);
+class Planner {
+public:
+  virtual ~Planner() = default;
+  // The name it is registered under, e.g. "guided".
+  virtual std::string name() const = 0;
+  // The same problem, parameters and seed give the same path, bit for bit, unless `stop` ends
+  // the search. `stop` is polled at least every few ms.
+  virtual PlanResult solve(const PlanningProblem& problem, const StopCondition& stop,
+                           const ProgressCallback& progress = {}) = 0;
+};
 
 }  // namespace demoplan

@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "core/graph/constraint_graph.h"
-#include "core/planning/path.h"
+#include "core/path/path.h"
 #include "core/scene/collision_checker.h"
 
 namespace demoplan {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/model/robot_model.h"
-#include "core/planning/path.h"
+#include "core/path/path.h"
 
 namespace demoplan {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/planning/path.h"
+#include "core/path/path.h"
 #include "core/trajectory/motion.h"
 
 namespace demoplan {

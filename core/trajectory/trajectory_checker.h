@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/planning/path.h"
+#include "core/path/path.h"
 #include "core/trajectory/joint_limits.h"
 #include "core/trajectory/trajectory.h"
 

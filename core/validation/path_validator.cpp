@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "core/model/kinematics.h"
-#include "core/planning/path_interpolation.h"
+#include "core/path/path_interpolation.h"
 #include "core/scene/collision_checker.h"
 #include "core/scene/support.h"
 

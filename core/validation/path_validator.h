@@ -8,7 +8,7 @@
 
 #include "core/demo/benchmark_task.h"
 #include "core/demo/demonstration.h"
-#include "core/planning/path.h"
+#include "core/path/path.h"
 #include "core/scene/scene.h"
 
 namespace demoplan {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/planning/path_interpolation.h"
+#include "core/path/path_interpolation.h"
 
 namespace demoplan {
 

@@ -3,7 +3,7 @@
 // up to a few hundredths of a radian; near a shelf or a table that can touch. This checks the
 // trajectory itself against the scene, with the parts carried as along the path, and retimes
 // it to rest at the corners whose blends collide (resting there follows the path exactly).
-#include "core/planning/path.h"
+#include "core/path/path.h"
 #include "core/scene/collision_checker.h"
 #include "core/trajectory/time_parameterization.h"
 

@@ -20,12 +20,4 @@ Pose pose_from_json(const JsonField& field) {
   return pose_from_xyz_quat({t[0].number(), t[1].number(), t[2].number()}, quat);
 }
 
-void check_format(const JsonField& root, const std::string& format, int version) {
-  if (root["format"].string() != format) root["format"].fail("expected '" + format + "'");
-  const int v = root["version"].integer();
-  if (v != version)
-    root["version"].fail("unsupported version " + std::to_string(v) + " (this demoplan reads version " +
-                         std::to_string(version) + ")");
-}
-
 }  // namespace demoplan::perception

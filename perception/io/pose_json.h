@@ -10,7 +10,4 @@ Json pose_to_json(const Pose& pose);
 // non-orthonormal rotation.
 Pose pose_from_json(const JsonField& field);
 
-// Checks "format" and "version" of a perception file; throws InputError otherwise.
-void check_format(const JsonField& root, const std::string& format, int version);
-
 }  // namespace demoplan::perception

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/geometry/ray_box.h"
+
 namespace demoplan::perception {
 
 namespace {
@@ -21,20 +23,9 @@ Pose look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
 }  // namespace
 
 bool segment_hits_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::AlignedBox3d& box) {
+  // The last 5 cm before `b` do not count: the point itself may lie on the box.
   const Eigen::Vector3d d = b - a;
-  double t0 = 0, t1 = 1 - 0.05 / std::max(d.norm(), 0.06);
-  for (int i = 0; i < 3; ++i) {
-    if (std::abs(d[i]) < 1e-12) {
-      if (a[i] < box.min()[i] || a[i] > box.max()[i]) return false;
-      continue;
-    }
-    double u = (box.min()[i] - a[i]) / d[i], v = (box.max()[i] - a[i]) / d[i];
-    if (u > v) std::swap(u, v);
-    t0 = std::max(t0, u);
-    t1 = std::min(t1, v);
-    if (t0 > t1) return false;
-  }
-  return true;
+  return ray_hits_box(a, d, box, 0.0, 1 - 0.05 / std::max(d.norm(), 0.06));
 }
 
 Camera place_camera(const DemoScript& s, const std::vector<Eigen::AlignedBox3d>& obstacles,

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/project/project.h"
 #include "tests/app/cli_runner.h"
 
 namespace {
@@ -199,6 +200,49 @@ TEST_F(Cli, HelpExitsZero) {
   const Result r = run({"check", "--help"});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE((r.out + r.err).find("--task"), std::string::npos);
+}
+
+TEST_F(Cli, NewWritesAProjectTheDesktopApplicationOpens) {
+  const fs::path out = work_ / "job.demoplan";
+  const Result r = run({"new", "shelf_1:panda:1", "--out", out.string(), "--json", "--data-dir", DEMOPLAN_DATA_DIR});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  const demoplan::Project p = demoplan::load_project(out.string());
+  EXPECT_EQ(p.scene.task, "shelf_1");
+  EXPECT_EQ(p.scene.robot, "panda");
+  EXPECT_EQ(p.scene.pose, 1);
+  ASSERT_EQ(j["events"].get<size_t>(), p.demonstration.events.size());
+  EXPECT_EQ(p.demonstration.events.size(), 2 * p.demonstration.object_ids.size());  // each part picked once
+  EXPECT_TRUE(j["deck_notes"].empty());
+  EXPECT_TRUE(p.video.empty());
+}
+
+TEST_F(Cli, NewSaysWhereThePartsRideOnTheRobot) {
+  const fs::path out = work_ / "waiter.demoplan";
+  const Result r = run({"new", "waiter_0:kmr_iiwa:0", "--out", out.string(), "--json", "--data-dir", DEMOPLAN_DATA_DIR});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  ASSERT_EQ(j["deck_notes"].size(), 3u) << r.out;  // YCBV_02, 03 and 05 ride on the deck
+  EXPECT_NE(r.err.find("on the robot's deck: YCBV_05 on kmr_link"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, NewRefusesABadSceneOrFile) {
+  const std::string out = (work_ / "x.demoplan").string();
+  for (const std::string spec : {"shelf_1:panda", "shelf_1:panda:x", "shelf_1::1"}) {
+    const Result r = run({"new", spec, "--out", out, "--data-dir", DEMOPLAN_DATA_DIR});
+    EXPECT_EQ(r.code, 2) << spec << ": " << r.err;
+    EXPECT_NE(r.err.find("TASK:ROBOT:POSE"), std::string::npos) << r.err;
+  }
+  const Result task = run({"new", "shelf_9:panda:0", "--out", out, "--data-dir", DEMOPLAN_DATA_DIR});
+  EXPECT_EQ(task.code, 2) << task.err;
+  EXPECT_NE(task.err.find("shelf_9"), std::string::npos) << task.err;
+  write_text(work_ / "camera.json", R"({"format": "demoplan-camera", "version": 7})");
+  const Result camera = run({"new", "shelf_1:panda:1", "--out", out, "--camera", (work_ / "camera.json").string(),
+                             "--data-dir", DEMOPLAN_DATA_DIR});
+  EXPECT_EQ(camera.code, 2) << camera.err;
+  EXPECT_NE(camera.err.find("camera.json"), std::string::npos) << camera.err;
+  EXPECT_NE(camera.err.find("version"), std::string::npos) << camera.err;
+  EXPECT_FALSE(fs::exists(out));  // nothing written after a refusal
 }
 
 }  // namespace

@@ -1,30 +1,43 @@
 #pragma once
-// A benchmark instance ready to plan and validate: the task, its scene for one robot and base
-// pose, the constraint graph of its cleaned demonstration, a collision checker, and what the
-// validator checks a path against. Shared by the planner and shortcut tests.
+// A benchmark instance ready to plan and validate: the task, and core's PlanningProblem for one
+// robot and base pose of its cleaned demonstration (deck placement done), with shorthands for
+// its parts. Shared by the planner and shortcut tests.
 #include <memory>
 #include <string>
 
 #include "core/demo/benchmark_demonstration.h"
 #include "core/demo/benchmark_scene.h"
-#include "core/graph/constraint_graph.h"
-#include "core/scene/collision_checker.h"
-#include "core/validation/path_validator.h"
+#include "core/placement/deck_placement.h"
+#include "core/planning/guided_planner.h"
+#include "core/planning/planning_problem.h"
 
 namespace demoplan {
 
-struct PlanningProblem {
+struct BenchmarkProblem {
   BenchmarkTask task;
-  Scene scene;
-  ConstraintGraph graph;
-  std::unique_ptr<CollisionChecker> checker;
-  ValidationTask vtask;
+  PlanningProblem problem;
+  const Scene& scene;
+  const ConstraintGraph& graph;
+  const CollisionChecker* checker;
+  const ValidationTask& vtask;
 
-  PlanningProblem(const std::string& name, const std::string& robot, int pose)
-      : task(load_benchmark_task(DEMOPLAN_DATA_DIR, name)), scene(build_benchmark_scene(task, robot, pose)) {
-    graph = build_constraint_graph(scene, demonstration_from_benchmark(task, scene, PoseSource::Subgoals));
-    checker = std::make_unique<CollisionChecker>(scene);
-    vtask = validation_task(task, scene);
+  BenchmarkProblem(const std::string& name, const std::string& robot, int pose,
+                   const std::string& data_dir = DEMOPLAN_DATA_DIR)
+      : task(load_benchmark_task(data_dir, name)), problem(make(task, robot, pose)), scene(*problem.scene),
+        graph(*problem.graph), checker(problem.checker.get()), vtask(problem.validation) {}
+
+  // The guided planner with params.time_limit (and `cancel`) as its stop condition.
+  PlanResult plan(const PlannerParams& params, const ProgressCallback& progress = {},
+                  const std::atomic<bool>* cancel = nullptr) const {
+    return GuidedPlanner(params).solve(problem, StopCondition(params.time_limit, cancel), progress);
+  }
+
+private:
+  static PlanningProblem make(const BenchmarkTask& task, const std::string& robot, int pose) {
+    auto scene = std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose));
+    const Demonstration demo =
+        place_on_deck(*scene, demonstration_from_benchmark(task, *scene, PoseSource::Subgoals)).demonstration;
+    return make_planning_problem(scene, demo, validation_task(task, *scene));
   }
 };
 

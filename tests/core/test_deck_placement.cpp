@@ -1,15 +1,20 @@
-// Where objects ride on the KMR's deck in waiter_0 (choose_deck_poses). The demonstrator's tray
-// offsets leave the last pick (YCBV_05 from the deck to the shelf) without a handle that both
-// grasps it on the deck and releases it on the shelf; the chosen poses must make every pick
-// feasible, lie on the deck by the benchmark's placement test and collide with nothing that
-// rides or stands with them.
+// Where objects ride on the KMR's deck in waiter_0 (place_on_deck). With YCBV_05's 2024
+// handles the demonstrator's tray offsets leave the last pick (YCBV_05 from the deck to the
+// shelf) without a handle that both grasps it on the deck and releases it on the shelf; the
+// chosen poses must make every pick feasible, lie on the deck by the benchmark's placement test
+// and collide with nothing that rides or stands with them.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
 
 #include "core/demo/benchmark_demonstration.h"
 #include "core/demo/benchmark_scene.h"
+#include "core/placement/deck_placement.h"
 #include "core/graph/pick_feasibility.h"
 #include "core/scene/collision_checker.h"
 #include "core/scene/support.h"
+#include "tests/support/data_2024.h"
 
 using namespace demoplan;
 
@@ -19,22 +24,29 @@ struct Waiter {
   BenchmarkTask task;
   Scene scene;
   Demonstration tray;  // the demonstrator's deck poses (no choice)
-  Demonstration demo;  // as demonstration_from_benchmark() gives it
+  Demonstration demo;  // after the deck placement stage
   DeckPlacementReport report;
 };
 
+// With YCBV_05's 2024 handles (tests/support/data_2024.h) the bottle cannot stay where the tray
+// had it, so the chooser has to move it; with the paper's handles (the bundled data) every
+// demonstrated pose works (the last test).
+Waiter load_waiter(const std::string& data_dir) {
+  Waiter w;
+  w.task = load_benchmark_task(data_dir, "waiter_0");
+  w.scene = build_benchmark_scene(w.task, "kmr_iiwa", 0);
+  DeckPlacement placed = place_on_deck(w.scene, demonstration_from_benchmark(w.task, w.scene, PoseSource::Subgoals));
+  w.demo = std::move(placed.demonstration);
+  w.report = std::move(placed.report);
+  // The tray's poses: the same demonstration with the chosen poses put back.
+  w.tray = w.demo;
+  for (const auto& r : w.report.rests)
+    for (int e = r.first_event; e <= r.last_event; ++e) w.tray.events[e].poses[r.object] = r.demonstrated;
+  return w;
+}
+
 const Waiter& waiter() {
-  static const Waiter w = [] {
-    Waiter w;
-    w.task = load_benchmark_task(DEMOPLAN_DATA_DIR, "waiter_0");
-    w.scene = build_benchmark_scene(w.task, "kmr_iiwa", 0);
-    w.demo = demonstration_from_benchmark(w.task, w.scene, PoseSource::Subgoals, &w.report);
-    // The tray's poses: the same demonstration with the chosen poses put back.
-    w.tray = w.demo;
-    for (const auto& r : w.report.rests)
-      for (int e = r.first_event; e <= r.last_event; ++e) w.tray.events[e].poses[r.object] = r.demonstrated;
-    return w;
-  }();
+  static const Waiter w = load_waiter(demoplan::testdata::data_dir_with_2024_bottle(DEMOPLAN_DATA_DIR));
   return w;
 }
 
@@ -133,12 +145,41 @@ TEST(DeckPlacement, EveryPickHasAHandleThatGraspsAndReleasesCollisionFree) {
 TEST(DeckPlacement, TasksWithoutDeckPosesAreLeftAlone) {
   const BenchmarkTask task = load_benchmark_task(DEMOPLAN_DATA_DIR, "shelf_1");
   const Scene scene = build_benchmark_scene(task, "panda", 0);
-  DeckPlacementReport report;
-  report.rests.emplace_back();  // must be cleared
-  const Demonstration d = demonstration_from_benchmark(task, scene, PoseSource::Subgoals, &report);
-  EXPECT_TRUE(report.rests.empty());
-  Demonstration copy = d;
-  EXPECT_TRUE(choose_deck_poses(scene, copy).rests.empty());
+  const Demonstration d = demonstration_from_benchmark(task, scene, PoseSource::Subgoals);
+  const DeckPlacement placed = place_on_deck(scene, d);
+  EXPECT_TRUE(placed.report.rests.empty());
+  const Demonstration& copy = placed.demonstration;
   for (size_t e = 0; e < d.events.size(); ++e)
     for (size_t o = 0; o < d.object_ids.size(); ++o) EXPECT_EQ(copy.events[e].poses[o].matrix(), d.events[e].poses[o].matrix());
+}
+
+TEST(DeckPlacement, ACancelledStageLeavesTheDemonstrationAsItWas) {
+  const Waiter& w = waiter();
+  const Demonstration on_tray = demonstration_from_benchmark(w.task, w.scene, PoseSource::Subgoals);
+  std::atomic<bool> cancel{false};
+  std::vector<double> progress;
+  const DeckPlacement placed =
+      place_on_deck(w.scene, on_tray, {}, StopCondition(60.0, &cancel), [&](double done, int total) {
+        EXPECT_EQ(total, 3);
+        progress.push_back(done);
+        if (done >= 1.0) cancel = true;  // during the second object
+      });
+  EXPECT_TRUE(placed.report.stopped);
+  ASSERT_FALSE(progress.empty());
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_GE(progress.back(), 1.0);
+  EXPECT_LT(progress.back(), 2.0);
+  for (size_t e = 0; e < on_tray.events.size(); ++e)
+    for (size_t o = 0; o < on_tray.object_ids.size(); ++o)
+      EXPECT_EQ(placed.demonstration.events[e].poses[o].matrix(), on_tray.events[e].poses[o].matrix());
+}
+
+TEST(DeckPlacement, ThePaperEraHandlesKeepEveryDemonstratedDeckPose) {
+  const Waiter w = load_waiter(DEMOPLAN_DATA_DIR);
+  ASSERT_EQ(w.report.rests.size(), 3u);
+  for (const auto& r : w.report.rests) {
+    EXPECT_TRUE(r.feasible) << r.note;
+    EXPECT_FALSE(r.changed) << r.note;
+    EXPECT_NE(r.note.find("demonstrated pose kept"), std::string::npos) << r.note;
+  }
 }

@@ -2,19 +2,25 @@
 // reports progress; the validator rejects paths broken on purpose.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <random>
 #include <thread>
 
-#include "core/planning/solve.h"
+#include "core/error.h"
+#include "core/planning/guided_planner.h"
+#include "core/planning/plan_job.h"
+#include "core/planning/planner_registry.h"
 #include "tests/core/planning_problem.h"
+#include "tests/support/data_2024.h"
 
 using namespace demoplan;
 
 namespace {
 
-PlanningProblem& shelf0() {
-  static PlanningProblem p("shelf_0", "panda", 1);
+BenchmarkProblem& shelf0() {
+  static BenchmarkProblem p("shelf_0", "panda", 1);
   return p;
 }
 
@@ -28,8 +34,8 @@ PlannerParams params(std::uint64_t seed, double time_limit = 30.0) {
 // A solved path of shelf_0 (one object) for the corruption tests.
 const Path& solved_path() {
   static const Path path = [] {
-    PlanningProblem& p = shelf0();
-    PlanResult r = plan_guided(p.scene, p.graph, *p.checker, params(1));
+    BenchmarkProblem& p = shelf0();
+    PlanResult r = p.plan(params(1));
     EXPECT_TRUE(r.solved) << r.message;
     return r.path;
   }();
@@ -45,7 +51,7 @@ size_t first_with_action(const Path& p, GripperAction a) {
 }  // namespace
 
 TEST(GuidedPlanner, SolvesAOneObjectShelfTaskWithAValidPath) {
-  PlanningProblem& p = shelf0();
+  BenchmarkProblem& p = shelf0();
   const Path& path = solved_path();
   const ValidationReport v = validate_path(p.scene, p.vtask, path);
   EXPECT_TRUE(v.valid) << v.message;
@@ -59,9 +65,9 @@ TEST(GuidedPlanner, SolvesAOneObjectShelfTaskWithAValidPath) {
 }
 
 TEST(GuidedPlanner, TheSameSeedGivesTheSamePathBitForBit) {
-  PlanningProblem& p = shelf0();
-  const PlanResult a = plan_guided(p.scene, p.graph, *p.checker, params(7));
-  const PlanResult b = plan_guided(p.scene, p.graph, *p.checker, params(7));
+  BenchmarkProblem& p = shelf0();
+  const PlanResult a = p.plan(params(7));
+  const PlanResult b = p.plan(params(7));
   ASSERT_TRUE(a.solved && b.solved);
   EXPECT_EQ(a.iterations, b.iterations);
   ASSERT_EQ(a.path.waypoints.size(), b.path.waypoints.size());
@@ -69,16 +75,16 @@ TEST(GuidedPlanner, TheSameSeedGivesTheSamePathBitForBit) {
     EXPECT_TRUE((a.path.waypoints[k].q.array() == b.path.waypoints[k].q.array()).all()) << "waypoint " << k;
     EXPECT_EQ(a.path.waypoints[k].state, b.path.waypoints[k].state);
   }
-  const PlanResult c = plan_guided(p.scene, p.graph, *p.checker, params(8));
+  const PlanResult c = p.plan(params(8));
   ASSERT_TRUE(c.solved);
   EXPECT_FALSE(c.path.waypoints.size() == a.path.waypoints.size() &&
                (c.path.waypoints[1].q.array() == a.path.waypoints[1].q.array()).all());
 }
 
 TEST(GuidedPlanner, CancelStopsWithin100ms) {
-  // shelf_1 with Panda at pose 0 has no solution (YCBV_05 cannot be released on the table from
-  // this base pose): the planner would run to its time limit.
-  PlanningProblem p("shelf_1", "panda", 0);
+  // shelf_1 with Panda at pose 0 and YCBV_05's 2024 handles has no solution (the bottle cannot
+  // be released on the table from this base pose): the planner would run to its time limit.
+  BenchmarkProblem p("shelf_1", "panda", 0, demoplan::testdata::data_dir_with_2024_bottle(DEMOPLAN_DATA_DIR));
   std::atomic<bool> cancel{false};
   std::chrono::steady_clock::time_point cancelled_at;
   std::thread canceller([&] {
@@ -86,7 +92,7 @@ TEST(GuidedPlanner, CancelStopsWithin100ms) {
     cancelled_at = std::chrono::steady_clock::now();
     cancel = true;
   });
-  const PlanResult r = plan_guided(p.scene, p.graph, *p.checker, params(1, 30.0), {}, &cancel);
+  const PlanResult r = p.plan(params(1, 30.0), {}, &cancel);
   const auto returned = std::chrono::steady_clock::now();
   canceller.join();
   EXPECT_FALSE(r.solved);
@@ -96,11 +102,11 @@ TEST(GuidedPlanner, CancelStopsWithin100ms) {
 }
 
 TEST(GuidedPlanner, ReportsProgressAtLeastTenTimesASecond) {
-  PlanningProblem p("shelf_1", "panda", 0);
+  BenchmarkProblem p("shelf_1", "panda", 0, demoplan::testdata::data_dir_with_2024_bottle(DEMOPLAN_DATA_DIR));
   PlannerParams pp = params(1, 1.0);
   std::vector<PlannerProgress> snapshots;
   size_t edges = 0;
-  const PlanResult r = plan_guided(p.scene, p.graph, *p.checker, pp, [&](const PlannerProgress& s) {
+  const PlanResult r = p.plan(pp, [&](const PlannerProgress& s) {
     snapshots.push_back(s);
     edges += s.new_edges.size();
   });
@@ -119,18 +125,18 @@ TEST(GuidedPlanner, ReportsProgressAtLeastTenTimesASecond) {
 // Edges checked far too coarsely (every 0.4 rad) cut through obstacles; the final check at the
 // benchmark's sampling must catch those paths and planning must go on to a valid one.
 TEST(GuidedPlanner, TheFinalCheckRejectsPathsThatPassThroughObstacles) {
-  PlanningProblem p("shelf_1", "panda", 1);
+  BenchmarkProblem p("shelf_1", "panda", 1);
   int invalid_unchecked = 0, rejected = 0;
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     PlannerParams coarse = params(seed);
     coarse.resolution = 0.4;
     coarse.final_check = false;
-    const PlanResult unchecked = plan_guided(p.scene, p.graph, *p.checker, coarse);
+    const PlanResult unchecked = p.plan(coarse);
     ASSERT_TRUE(unchecked.solved) << unchecked.message;
     if (!validate_path(p.scene, p.vtask, unchecked.path).valid) ++invalid_unchecked;
 
     coarse.final_check = true;
-    const PlanResult checked = plan_guided(p.scene, p.graph, *p.checker, coarse);
+    const PlanResult checked = p.plan(coarse);
     ASSERT_TRUE(checked.solved) << checked.message;
     const ValidationReport v = validate_path(p.scene, p.vtask, checked.path);
     EXPECT_TRUE(v.valid) << "seed " << seed << ": " << v.message;
@@ -199,4 +205,91 @@ TEST_F(BrokenPath, PlacedObjectMoved) {
   const size_t g = first_with_action(path, GripperAction::Grasp);
   for (size_t i = g / 2; i < path.waypoints.size() && i < g - 1; ++i) path.waypoints[i].objects[0].translation().y() += 0.005;
   expect_invalid(path, "YCBV_02 moves");
+}
+
+TEST(PlannerRegistry, NamesItsPlannersAndRefusesAnUnknownOne) {
+  const std::vector<std::string> names = planner_names();
+  EXPECT_NE(std::find(names.begin(), names.end(), "guided"), names.end());
+  PlannerSettings s;
+  EXPECT_EQ(make_planner(s)->name(), "guided");
+  s.planner_name = "rrt-magic";
+  try {
+    make_planner(s);
+    ADD_FAILURE() << "an unknown planner was made";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("rrt-magic"), std::string::npos) << what;
+    EXPECT_NE(what.find("guided"), std::string::npos) << what;  // says what is known
+  }
+}
+
+// The plan job keeps the planner's own path (the same as the planner gives alone), shortens it,
+// and validates both.
+TEST(PlanJob, PlansShortensAndValidates) {
+  BenchmarkProblem& p = shelf0();
+  PlannerSettings s;
+  s.planner = params(7);
+  s.shortcutting.max_attempts = 300;  // bounded by attempts, not time: reproducible
+  const PlanReport r = run_plan_job(p.problem, s);
+  ASSERT_TRUE(r.valid()) << r.plan.message << " / " << r.validation.message;
+  EXPECT_EQ(r.planner, "guided");
+  const PlanResult alone = p.plan(params(7));
+  ASSERT_EQ(r.plan.path.waypoints.size(), alone.path.waypoints.size());
+  for (size_t k = 0; k < alone.path.waypoints.size(); ++k)
+    EXPECT_TRUE((r.plan.path.waypoints[k].q.array() == alone.path.waypoints[k].q.array()).all()) << "waypoint " << k;
+  EXPECT_TRUE(r.planner_validation.valid) << r.planner_validation.message;
+  EXPECT_TRUE(r.shortened);
+  EXPECT_LT(r.validation.length.robot, r.planner_validation.length.robot);
+  EXPECT_FALSE(r.feasibility.has_value());
+}
+
+TEST(PlanJob, AfterAFailureSaysWhichPickCannotBeDone) {
+  BenchmarkProblem p("shelf_2", "panda", 0, demoplan::testdata::data_dir_with_2024_bottle(DEMOPLAN_DATA_DIR));
+  PlannerSettings s;
+  s.planner = params(1, 0.5);
+  s.feasibility_samples = 40;
+  const PlanReport r = run_plan_job(p.problem, s);
+  EXPECT_FALSE(r.solved());
+  ASSERT_TRUE(r.feasibility.has_value());
+  ASSERT_EQ(r.feasibility->picks.size(), 3u);
+  EXPECT_FALSE(r.feasibility->picks[1].feasible());  // the bottle
+  EXPECT_NE(r.feasibility->summary(p.scene).find("pick 2 (YCBV_05) cannot be done"), std::string::npos);
+}
+
+TEST(PlanJob, ACancelledJobStopsWithoutADiagnosis) {
+  BenchmarkProblem& p = shelf0();
+  const std::atomic<bool> cancel{true};
+  const PlanReport r = run_plan_job(p.problem, PlannerSettings{}, {}, &cancel);
+  EXPECT_FALSE(r.solved());
+  EXPECT_TRUE(r.plan.cancelled);
+  EXPECT_FALSE(r.feasibility.has_value());
+}
+
+TEST(PlannerSettingsJson, RoundTripsAndNamesABadField) {
+  PlannerSettings s;
+  s.planner_name = "guided";
+  s.planner.seed = 42;
+  s.planner.time_limit = 12.5;
+  s.planner.eta_sample_tree = 0.25;
+  s.shortcut = false;
+  s.shortcutting.time_limit = 3.0;
+  s.feasibility_samples = 77;
+  const Json j = planner_settings_to_json(s);
+  const PlannerSettings back = planner_settings_from_json(JsonField(j, "project.demoplan"));
+  EXPECT_EQ(back.planner_name, "guided");
+  EXPECT_EQ(back.planner.seed, 42u);
+  EXPECT_EQ(back.planner.time_limit, 12.5);
+  EXPECT_EQ(back.planner.eta_sample_tree, 0.25);
+  EXPECT_FALSE(back.shortcut);
+  EXPECT_EQ(back.shortcutting.time_limit, 3.0);
+  EXPECT_EQ(back.feasibility_samples, 77);
+  Json bad = j;
+  bad["time_limit_s"] = -1;
+  try {
+    planner_settings_from_json(JsonField(bad, "project.demoplan"));
+    ADD_FAILURE() << "a negative time limit was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("time_limit_s"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("project.demoplan"), std::string::npos) << e.what();
+  }
 }

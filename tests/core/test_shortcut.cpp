@@ -49,10 +49,10 @@ ShortcutParams shortcut_params() {
 }  // namespace
 
 TEST(Shortcut, ShortensAndKeepsThePathValidWithItsApproaches) {
-  PlanningProblem p("shelf_1", "panda", 1);
+  BenchmarkProblem p("shelf_1", "panda", 1);
   PlannerParams pp;
   pp.seed = 1;
-  const PlanResult r = plan_guided(p.scene, p.graph, *p.checker, pp);
+  const PlanResult r = p.plan(pp);
   ASSERT_TRUE(r.solved) << r.message;
   Path path = r.path;
   const ShortcutResult s = shortcut_path(p.scene, p.graph, *p.checker, path, shortcut_params());
@@ -72,14 +72,14 @@ TEST(Shortcut, CutsOutAGraspThatPutsThePartBackUnmoved) {
   // The planner can link two trees of a placement state through a grasp state: the path grasps
   // a part and puts it back where it was. Find such a path among a few seeds (seed 1 on this
   // instance has one at the time of writing; the planner is deterministic per seed).
-  PlanningProblem p("tunnel_0", "panda", 3);
+  BenchmarkProblem p("tunnel_0", "panda", 3);
   const int picks = 2;
   Path detour;
   int before = 0;
   for (std::uint64_t seed = 1; seed <= 10 && detour.waypoints.empty(); ++seed) {
     PlannerParams pp;
     pp.seed = seed;
-    const PlanResult r = plan_guided(p.scene, p.graph, *p.checker, pp);
+    const PlanResult r = p.plan(pp);
     if (!r.solved) continue;
     before = validate_path(p.scene, p.vtask, r.path).grasps;
     if (before > picks) detour = r.path;

@@ -9,10 +9,11 @@
 #include <string>
 
 #include "core/demo/benchmark_demonstration.h"
+#include "core/placement/deck_placement.h"
 #include "core/demo/benchmark_scene.h"
 #include "core/graph/constraint_graph.h"
 #include "core/graph/projector.h"
-#include "core/planning/path.h"
+#include "core/path/path.h"
 
 namespace demoplan::testing_support {
 
@@ -40,7 +41,8 @@ inline BenchmarkPathCase benchmark_transition_path(const std::string& data_dir, 
   const std::vector<int> poses = benchmark_pose_ids(c.task, robot);
   if (poses.empty()) throw std::runtime_error(task_name + " has no pose for " + robot);
   c.scene = build_benchmark_scene(c.task, robot, poses.front());
-  c.graph = build_constraint_graph(c.scene, demonstration_from_benchmark(c.task, c.scene, PoseSource::Subgoals));
+  c.graph = build_constraint_graph(
+      c.scene, place_on_deck(c.scene, demonstration_from_benchmark(c.task, c.scene, PoseSource::Subgoals)).demonstration);
   const ConstraintGraph& g = c.graph;
   const ConstraintProjector projector(c.scene, g);
   std::mt19937_64 rng(seed);

@@ -74,8 +74,8 @@ private slots:
     window_->startUp(QString());
     QVERIFY2(doc()->hasProject(), qPrintable(window_->lastError()));
     QVERIFY(doc()->isTemplate());  // Save asks where
-    QVERIFY(doc()->video() != nullptr);
-    QVERIFY(doc()->camera() != nullptr);
+    QVERIFY(doc()->media()->video() != nullptr);
+    QVERIFY(doc()->media()->camera() != nullptr);
     QVERIFY(test::waitFor([&] { return !window_->sceneView()->glInfo().isEmpty(); }, 5000));
     qInfo("3D view: %s", qPrintable(window_->sceneView()->glInfo()));
     QVERIFY(!window_->sceneView()->glFailed());
@@ -183,20 +183,20 @@ private slots:
   void planWhileTheTreesGrow() {
     doc()->selectObject(-1);
     doc()->selectEvent(-1);
-    PlannerSettings settings = doc()->plannerSettings();
+    PlannerSettings settings = doc()->planning()->settings();
     settings.planner.seed = 2;  // solves the sample in a few seconds
-    doc()->setPlannerSettings(settings);
+    doc()->planning()->setSettings(settings);
     test::StallMeter meter;
     meter.start();
     QTest::keyClick(window_.get(), Qt::Key_F5);
-    QVERIFY(doc()->planner()->isRunning());
-    QVERIFY(test::waitFor([&] { return window_->sceneView()->treeEdgeCount() > 150 || !doc()->planner()->isRunning(); }, 20000));
+    QVERIFY(doc()->planning()->runner()->isRunning());
+    QVERIFY(test::waitFor([&] { return window_->sceneView()->treeEdgeCount() > 150 || !doc()->planning()->runner()->isRunning(); }, 20000));
     double stall = meter.stop();
-    if (doc()->planner()->isRunning()) shoot(QStringLiteral("04-planning-trees-growing"));  // (a blocking grab)
+    if (doc()->planning()->runner()->isRunning()) shoot(QStringLiteral("04-planning-trees-growing"));  // (a blocking grab)
     meter.start();
     double finished_at = -1;
-    QMetaObject::Connection c = connect(doc()->planner(), &PlanRunner::finished, this, [&] { finished_at = meter.elapsedMs(); });
-    QVERIFY(test::waitFor([&] { return !doc()->planner()->isRunning(); }, 60000));
+    QMetaObject::Connection c = connect(doc()->planning()->runner(), &PlanRunner::finished, this, [&] { finished_at = meter.elapsedMs(); });
+    QVERIFY(test::waitFor([&] { return !doc()->planning()->runner()->isRunning(); }, 60000));
     QTest::qWait(100);
     disconnect(c);
     qInfo("stall before the screenshot %.1f ms; after: %.1f ms ending at %.0f ms, planning finished at %.0f ms", stall,
@@ -208,7 +208,7 @@ private slots:
     QVERIFY2(stall < 150.0, qPrintable(QStringLiteral("event loop stalled %1 ms").arg(stall)));
     QVERIFY(window_->sceneView()->treeEdgeCount() > 0);
     QVERIFY(window_->sceneView()->treeRootCount() > 0);
-    const PlanResultData* r = doc()->result();
+    const PlanResultData* r = doc()->planning()->result();
     QVERIFY(r != nullptr);
     QVERIFY2(r->summary.solved, r->summary.message.c_str());
     QVERIFY2(r->summary.valid, r->summary.message.c_str());
@@ -239,12 +239,12 @@ private slots:
       QVERIFY2(actions.contains(QLatin1String(a)), qPrintable(actions.join(QLatin1Char(' '))));
     // Scrub to the middle of the first carry: the part travels with the gripper.
     const int carry = int(actions.indexOf(QStringLiteral("carry")));
-    const double t0 = doc()->interpolator()->waypoint_parameter(size_t(carry));
-    const double t1 = doc()->interpolator()->waypoint_parameter(size_t(carry + 1));
+    const double t0 = doc()->planning()->interpolator()->waypoint_parameter(size_t(carry));
+    const double t1 = doc()->planning()->interpolator()->waypoint_parameter(size_t(carry + 1));
     window_->resultPanel()->slider()->setValue(int((t0 + t1) / 2 * 1000));
     QCOMPARE(doc()->displayMode(), Document::DisplayMode::Result);
     const SceneState mid = doc()->displayState();
-    const SceneState start = doc()->interpolator()->at(0.0);
+    const SceneState start = doc()->planning()->interpolator()->at(0.0);
     double moved = 0;
     for (size_t o = 0; o < mid.objects.size(); ++o)
       moved = std::max(moved, (mid.objects[o].translation() - start.objects[o].translation()).norm());
@@ -285,7 +285,7 @@ private slots:
     QFile::remove(out);
     QVERIFY(dialog->saveTo(out));
     QVERIFY(QFileInfo(out).size() > 100);
-    QCOMPARE(doc()->stepState(Step::Export).status, StepStatus::Ok);
+    QCOMPARE(doc()->steps()->state(Step::Export).status, StepStatus::Ok);
     dialog->close();
   }
 
@@ -295,15 +295,15 @@ private slots:
     QVERIFY2(window_->saveAs(file), qPrintable(window_->lastError()));
     QVERIFY(QFileInfo::exists(shots_ + QStringLiteral("/end_to_end.path.json")));
     const Json demo = demonstration_to_json(doc()->demonstration());
-    const ResultSummary summary = doc()->result()->summary;
+    const ResultSummary summary = doc()->planning()->result()->summary;
     QVERIFY(window_->openProject(file));
     QCOMPARE(demonstration_to_json(doc()->demonstration()), demo);
-    QVERIFY(doc()->result() != nullptr);
-    QVERIFY(doc()->result()->path.has_value());
-    QCOMPARE(doc()->result()->summary.valid, summary.valid);
-    QCOMPARE(doc()->result()->summary.planning_time_s, summary.planning_time_s);
-    QVERIFY(doc()->interpolator() != nullptr);
-    QVERIFY(!doc()->resultStale());
+    QVERIFY(doc()->planning()->result() != nullptr);
+    QVERIFY(doc()->planning()->result()->path.has_value());
+    QCOMPARE(doc()->planning()->result()->summary.valid, summary.valid);
+    QCOMPARE(doc()->planning()->result()->summary.planning_time_s, summary.planning_time_s);
+    QVERIFY(doc()->planning()->interpolator() != nullptr);
+    QVERIFY(!doc()->planning()->resultStale());
     QCOMPARE(window_->recentFiles().value(0), QFileInfo(file).absoluteFilePath());
     doc()->setPlaybackT(0.35);
     shoot(QStringLiteral("07-reopened"));
@@ -338,7 +338,7 @@ private slots:
       QCOMPARE(next.document()->demonstration().events[3].frame, 100);
       QCOMPARE(next.document()->filePath(), doc()->filePath());  // Save goes to the real file
       QVERIFY(next.document()->isModified());
-      QVERIFY(next.document()->video() != nullptr);  // relative paths resolved from the autosave folder
+      QVERIFY(next.document()->media()->video() != nullptr);  // relative paths resolved from the autosave folder
       QVERIFY(!QFileInfo::exists(autosave));
     }
     window_->autosaveNow();
@@ -374,8 +374,8 @@ private slots:
   void detectTheEventsInTheVideo() {
     window_->findChild<QDockWidget*>(QStringLiteral("VideoDock"))->show();
     QTest::keyClick(window_.get(), Qt::Key_D, Qt::ControlModifier);
-    QVERIFY(doc()->extractor()->isRunning());
-    QVERIFY(test::waitFor([&] { return !doc()->extractor()->isRunning(); }, 30000));
+    QVERIFY(doc()->detection()->runner()->isRunning());
+    QVERIFY(test::waitFor([&] { return !doc()->detection()->runner()->isRunning(); }, 30000));
     QCOMPARE(int(doc()->demonstration().events.size()), 4);
     QCOMPARE(window_->stepBar()->state(Step::Events).status == StepStatus::Error, false);
     qInfo("after detection: events %s; poses %s", qPrintable(window_->stepBar()->state(Step::Events).message),

@@ -63,7 +63,7 @@ private slots:
   void previewsAndSaves() {
     Document doc(test::dataDir().toStdString());
     doc.open(project_);
-    QVERIFY(doc.result() && doc.result()->path);
+    QVERIFY(doc.planning()->result() && doc.planning()->result()->path);
     ExportDialog dialog(&doc, /*interactive=*/false);
     QCOMPARE(dialog.formatBox()->currentData().toString(), QStringLiteral("franka"));
     QVERIFY2(dialog.last().ok, dialog.last().error.c_str());
@@ -79,7 +79,7 @@ private slots:
     const QString out = dir_.filePath(QStringLiteral("swing.csv"));
     QVERIFY(dialog.saveTo(out));
     QVERIFY(QFileInfo(out).size() > 200);
-    QCOMPARE(doc.stepState(Step::Export).status, StepStatus::Ok);
+    QCOMPARE(doc.steps()->state(Step::Export).status, StepStatus::Ok);
   }
 
   void refusesAFormatThatDoesNotFitTheRobot() {

@@ -9,6 +9,7 @@
 #include "ui/document/document.h"
 #include "ui/widgets/planner_panel.h"
 #include "ui_test_support.h"
+#include "tests/support/data_2024.h"
 
 using namespace demoplan;
 using namespace demoplan::ui;
@@ -20,10 +21,10 @@ private slots:
     Document doc(test::dataDir().toStdString());
     doc.open(test::sampleProject());
     // A job that cannot finish on its own within the test: plenty of time, no shortcut.
-    PlannerSettings s = doc.plannerSettings();
+    PlannerSettings s = doc.planning()->settings();
     s.planner.time_limit = 120;
     s.planner.eta_sample_tree = 0.0;  // no video guidance: much slower to solve
-    doc.setPlannerSettings(s);
+    doc.planning()->setSettings(s);
     PlannerPanel panel(&doc);
     panel.show();
     QVERIFY(panel.planButton()->isEnabled());
@@ -31,39 +32,42 @@ private slots:
 
     test::StallMeter meter;
     meter.start();
+    const int graph_builds = doc.steps()->graphBuilds();
     QTest::mouseClick(panel.planButton(), Qt::LeftButton);
-    QVERIFY(doc.planner()->isRunning());
+    QVERIFY(doc.planning()->runner()->isRunning());
     QVERIFY(!panel.planButton()->isEnabled());
     QVERIFY(panel.cancelButton()->isEnabled());
     // It makes progress: snapshots arrive and the state table fills.
-    QVERIFY(test::waitFor([&] { return doc.planner()->lastSnapshot().iterations > 0; }, 5000));
+    QVERIFY(test::waitFor([&] { return doc.planning()->runner()->lastSnapshot().iterations > 0; }, 5000));
     QTest::qWait(400);
     const double stall = meter.stop();
     qInfo("longest event-loop stall while planning: %.1f ms", stall);
     QVERIFY2(stall < 100.0, qPrintable(QStringLiteral("event loop stalled %1 ms").arg(stall)));
     QVERIFY(panel.stateTable()->rowCount() > 0);
     QVERIFY(panel.progressBar()->value() > 0);
+    // The planner's graph is built on its own thread; the GUI thread built none meanwhile.
+    QCOMPARE(doc.steps()->graphBuilds(), graph_builds);
 
     QElapsedTimer t;
     t.start();
     QTest::mouseClick(panel.cancelButton(), Qt::LeftButton);
-    QVERIFY(test::waitFor([&] { return !doc.planner()->isRunning() && panel.planButton()->isEnabled(); }, 1000));
+    QVERIFY(test::waitFor([&] { return !doc.planning()->runner()->isRunning() && panel.planButton()->isEnabled(); }, 1000));
     const qint64 cancel_ms = t.elapsed();
     qInfo("idle %lld ms after Cancel", cancel_ms);
     QVERIFY(cancel_ms < 100);
     QVERIFY(!panel.cancelButton()->isEnabled());
     QVERIFY(panel.messageLabel()->text().contains(QStringLiteral("Cancelled")));
-    QCOMPARE(doc.stepState(Step::Plan).status, StepStatus::Warning);
+    QCOMPARE(doc.steps()->state(Step::Plan).status, StepStatus::Warning);
 
     // Usable again: the default settings solve the sample.
-    doc.setPlannerSettings(PlannerSettings{});
+    doc.planning()->setSettings(PlannerSettings{});
     QTest::mouseClick(panel.planButton(), Qt::LeftButton);
-    QVERIFY(doc.planner()->isRunning());
-    QVERIFY(test::waitFor([&] { return !doc.planner()->isRunning(); }, 30000));
-    QVERIFY(doc.result() != nullptr);
-    QVERIFY2(doc.result()->summary.solved, doc.result()->summary.message.c_str());
-    QVERIFY2(doc.result()->summary.valid, doc.result()->summary.message.c_str());
-    QCOMPARE(doc.stepState(Step::Plan).status, StepStatus::Ok);
+    QVERIFY(doc.planning()->runner()->isRunning());
+    QVERIFY(test::waitFor([&] { return !doc.planning()->runner()->isRunning(); }, 30000));
+    QVERIFY(doc.planning()->result() != nullptr);
+    QVERIFY2(doc.planning()->result()->summary.solved, doc.planning()->result()->summary.message.c_str());
+    QVERIFY2(doc.planning()->result()->summary.valid, doc.planning()->result()->summary.message.c_str());
+    QCOMPARE(doc.steps()->state(Step::Plan).status, StepStatus::Ok);
     QVERIFY(panel.messageLabel()->text().contains(QStringLiteral("valid")));
     // Every placement of the demonstration was reached (grasp states exist per handle; the
     // path needs one handle per part).
@@ -79,16 +83,16 @@ private slots:
   void aFailureSaysWhatWasNotReached() {
     Document doc(test::dataDir().toStdString());
     doc.open(test::sampleProject());
-    PlannerSettings s = doc.plannerSettings();
+    PlannerSettings s = doc.planning()->settings();
     s.planner.time_limit = 0.3;  // far too short to solve
     s.planner.eta_sample_tree = 0.0;
-    doc.setPlannerSettings(s);
+    doc.planning()->setSettings(s);
     PlannerPanel panel(&doc);
     panel.plan();
-    QVERIFY(test::waitFor([&] { return !doc.planner()->isRunning(); }, 10000));
-    QVERIFY(doc.result() != nullptr);
-    QVERIFY(!doc.result()->summary.solved);
-    QCOMPARE(doc.stepState(Step::Plan).status, StepStatus::Error);
+    QVERIFY(test::waitFor([&] { return !doc.planning()->runner()->isRunning(); }, 10000));
+    QVERIFY(doc.planning()->result() != nullptr);
+    QVERIFY(!doc.planning()->result()->summary.solved);
+    QCOMPARE(doc.steps()->state(Step::Plan).status, StepStatus::Error);
     const QString msg = panel.messageLabel()->text();
     QVERIFY2(msg.contains(QStringLiteral("No path")), qPrintable(msg));
     // Without video guidance no transition tree is rooted: the message lists them and the
@@ -97,18 +101,19 @@ private slots:
   }
 
   void aDemonstrationThatCannotBeDoneSaysWhichPickAndWhy() {
-    // shelf_2 from Panda pose 0: the upright bottle (YCBV_05) cannot be grasped where it stands.
-    Document doc(test::dataDir().toStdString());
+    // shelf_2 from Panda pose 0 with YCBV_05's 2024 handles: the upright bottle cannot be
+    // grasped where it stands.
+    Document doc(demoplan::testdata::data_dir_with_2024_bottle(test::dataDir().toStdString()));
     doc.newFromBenchmark("shelf_2", "panda", 0);
-    PlannerSettings s = doc.plannerSettings();
+    PlannerSettings s = doc.planning()->settings();
     s.planner.time_limit = 0.5;
-    doc.setPlannerSettings(s);
+    doc.planning()->setSettings(s);
     PlannerPanel panel(&doc);
     panel.plan();
-    QVERIFY(test::waitFor([&] { return !doc.planner()->isRunning(); }, 20000));
-    QVERIFY(doc.result() != nullptr);
-    QVERIFY(!doc.result()->summary.solved);
-    const StepState step = doc.stepState(Step::Plan);
+    QVERIFY(test::waitFor([&] { return !doc.planning()->runner()->isRunning(); }, 20000));
+    QVERIFY(doc.planning()->result() != nullptr);
+    QVERIFY(!doc.planning()->result()->summary.solved);
+    const StepState step = doc.steps()->state(Step::Plan);
     QCOMPARE(step.status, StepStatus::Error);
     QVERIFY2(step.message.contains(QStringLiteral("pick 2 (YCBV_05) cannot be done")), qPrintable(step.message));
     const QString msg = panel.messageLabel()->text();
@@ -125,7 +130,7 @@ private slots:
     PlannerPanel panel(&doc);
     doc.removeEvent(0);
     QVERIFY(!panel.planButton()->isEnabled());
-    QVERIFY(!doc.startPlanning());
+    QVERIFY(!doc.planning()->start());
     panel.plan();
     QVERIFY(panel.messageLabel()->text().contains(QStringLiteral("release without a grasp")));
   }

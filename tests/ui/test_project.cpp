@@ -6,7 +6,7 @@
 
 #include "core/error.h"
 #include "ui/document/document.h"
-#include "ui/project/project.h"
+#include "core/project/project.h"
 #include "ui_test_support.h"
 
 using namespace demoplan;
@@ -38,11 +38,11 @@ private slots:
     T.translation().x() += 0.0123;
     doc.setObjectPose(1, 1, T);
     doc.setEventConfidence(2, 0.42);
-    PlannerSettings s = doc.plannerSettings();
+    PlannerSettings s = doc.planning()->settings();
     s.planner.seed = 7;
     s.planner.time_limit = 12.5;
     s.shortcut = false;
-    doc.setPlannerSettings(s);
+    doc.planning()->setSettings(s);
     doc.setCurrentFrame(33);
     const QString a = dir.filePath(QStringLiteral("a.demoplan"));
     doc.saveAs(a);
@@ -51,15 +51,15 @@ private slots:
     Document again(test::dataDir().toStdString());
     again.open(a);
     QCOMPARE(again.currentFrame(), 33);
-    QCOMPARE(again.plannerSettings().planner.seed, std::uint64_t(7));
-    QCOMPARE(again.plannerSettings().planner.time_limit, 12.5);
-    QCOMPARE(again.plannerSettings().shortcut, false);
+    QCOMPARE(again.planning()->settings().planner.seed, std::uint64_t(7));
+    QCOMPARE(again.planning()->settings().planner.time_limit, 12.5);
+    QCOMPARE(again.planning()->settings().shortcut, false);
     QCOMPARE(again.demonstration().events[1].frame, 50);
     QCOMPARE(again.demonstration().events[2].confidence, 0.42);
     QCOMPARE(demonstration_to_json(again.demonstration()), demonstration_to_json(doc.demonstration()));
-    QCOMPARE(again.videoPath(), doc.videoPath());  // relative in the file, the same file again
-    QCOMPARE(again.cameraPath(), doc.cameraPath());
-    QVERIFY(again.video() != nullptr);
+    QCOMPARE(again.media()->videoPath(), doc.media()->videoPath());  // relative in the file, the same file again
+    QCOMPARE(again.media()->cameraPath(), doc.media()->cameraPath());
+    QVERIFY(again.media()->video() != nullptr);
     // Saving what was opened writes the same bytes.
     const QString b = dir.filePath(QStringLiteral("b.demoplan"));
     again.saveAs(b);
@@ -83,7 +83,7 @@ private slots:
     // Opened from there, it finds the same video.
     Document again(test::dataDir().toStdString());
     again.open(sub);
-    QVERIFY2(again.video() != nullptr, qPrintable(again.videoError()));
+    QVERIFY2(again.media()->video() != nullptr, qPrintable(again.media()->videoError()));
   }
 
   void refusesBadFiles_data() {
@@ -141,8 +141,8 @@ private slots:
     Document doc(test::dataDir().toStdString());
     doc.open(f);
     QVERIFY(doc.hasProject());
-    QCOMPARE(doc.stepState(Step::Video).status, StepStatus::Error);
-    QVERIFY(doc.stepState(Step::Video).message.contains(QStringLiteral("nowhere.mp4")));
+    QCOMPARE(doc.steps()->state(Step::Video).status, StepStatus::Error);
+    QVERIFY(doc.steps()->state(Step::Video).message.contains(QStringLiteral("nowhere.mp4")));
   }
 };
 

@@ -80,7 +80,7 @@ private slots:
     QVERIFY(!doc_->issues().empty());
     QVERIFY2(panel_->validityLabel()->text().contains(QStringLiteral("never released")),
              qPrintable(panel_->validityLabel()->text()));
-    QCOMPARE(doc_->stepState(Step::Events).status, StepStatus::Error);
+    QCOMPARE(doc_->steps()->state(Step::Events).status, StepStatus::Error);
     doc_->undoStack()->undo();
     QVERIFY(doc_->issues().empty());
     QCOMPARE(demonstration_to_json(doc_->demonstration()), original_);
@@ -102,11 +102,11 @@ private slots:
   }
 
   void detectingEventsInTheVideoReplacesThemUndoably() {
-    QVERIFY2(doc_->extractionBlocker().isEmpty(), qPrintable(doc_->extractionBlocker()));
+    QVERIFY2(doc_->detection()->blocker().isEmpty(), qPrintable(doc_->detection()->blocker()));
     QVERIFY(panel_->detectButton()->isEnabled());
     QTest::mouseClick(panel_->detectButton(), Qt::LeftButton);
-    QVERIFY(doc_->extractor()->isRunning());
-    QVERIFY(test::waitFor([&] { return !doc_->extractor()->isRunning(); }, 30000));
+    QVERIFY(doc_->detection()->runner()->isRunning());
+    QVERIFY(test::waitFor([&] { return !doc_->detection()->runner()->isRunning(); }, 30000));
     QVERIFY2(panel_->detectionLabel()->text().startsWith(QStringLiteral("Found")), qPrintable(panel_->detectionLabel()->text()));
     const Demonstration& d = doc_->demonstration();
     QCOMPARE(d.object_ids, std::vector<std::string>({"YCBV_02", "YCBV_05"}));  // the scene's order
@@ -121,9 +121,9 @@ private slots:
   }
 
   void detectionCanBeCancelled() {
-    QVERIFY(doc_->startExtraction());
-    doc_->extractor()->cancel();
-    QVERIFY(!doc_->extractor()->isRunning());
+    QVERIFY(doc_->detection()->start());
+    doc_->detection()->runner()->cancel();
+    QVERIFY(!doc_->detection()->runner()->isRunning());
     QVERIFY(panel_->detectButton()->isEnabled());
     QTest::qWait(200);
     QCOMPARE(demonstration_to_json(doc_->demonstration()), original_);

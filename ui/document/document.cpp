@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "core/error.h"
-#include "core/demo/benchmark_demonstration.h"
+#include "core/project/new_project.h"
 #include "perception/camera/camera_model.h"
 #include "perception/video/video_reader.h"
 #include "ui/document/demo_poses.h"
@@ -15,7 +15,6 @@ namespace demoplan::ui {
 
 namespace {
 
-constexpr double kLowConfidence = 0.5;
 
 // Every demonstration edit as a before/after pair: demonstrations are small (a few events of a
 // few objects), and a snapshot cannot get an index wrong after an earlier undo.
@@ -60,43 +59,21 @@ const char* type_word(EventType t) { return t == EventType::Grasp ? "grasp" : "r
 }  // namespace
 
 Document::Document(std::string default_data_dir, QObject* parent)
-    : QObject(parent),
-      data_dir_(std::move(default_data_dir)),
-      mesh_cache_(std::make_unique<MeshCache>()),
-      runner_(this),
-      extractor_(this) {
-  connect(&extractor_, &ExtractionRunner::finished, this, [this](const ExtractionOutcome& o) {
-    if (o.ok) {
-      if (o.demonstration.events.empty()) {
-        ExtractionOutcome none = o;
-        none.ok = false;
-        none.error = "no grasp or release was found in the video";
-        emit extractionDone(none);
-        return;
-      }
-      replaceDemonstration(o.demonstration, tr("Detect events in the video (%1 events)").arg(o.demonstration.events.size()));
-    }
-    emit extractionDone(o);
-    emit stepsChanged();
-  });
+    : QObject(parent), data_dir_(std::move(default_data_dir)), mesh_cache_(std::make_unique<MeshCache>()) {
+  media_ = new Media(this);
+  planning_ = new PlanningController(this);
+  detection_ = new EventDetection(this);
+  steps_ = new StepStatusModel(this);
   connect(&undo_, &QUndoStack::cleanChanged, this, [this] { emit modifiedChanged(isModified()); });
-  connect(&runner_, &PlanRunner::finished, this, &Document::onPlanFinished);
-  connect(&runner_, &PlanRunner::started, this, &Document::stepsChanged);
-  connect(&runner_, &PlanRunner::cancelled, this, [this](const PlanSnapshot& last) {
-    auto r = std::make_shared<PlanResultData>(result_ ? *result_ : PlanResultData{});
-    if (!result_) {
-      r->summary.message = "cancelled after " + std::to_string(last.iterations) + " iterations";
-      r->summary.iterations = last.iterations;
-      r->summary.trees = last.trees;
-      r->summary.nodes = last.nodes;
-      r->summary.planning_time_s = last.elapsed_s;
-      r->summary.demonstration_digest = "";
-      r->cancelled = true;
-      r->state_nodes = last.state_nodes;
-      result_ = r;
-      emit resultChanged();
-    }
-    emit stepsChanged();
+  connect(media_, &Media::edited, this, &Document::setModified);
+  connect(media_, &Media::videoChanged, this, [this] {
+    clampFrame();
+    emit displayChanged();
+  });
+  connect(planning_, &PlanningController::resultChanged, this, [this] {
+    playback_t_ = 0.0;
+    if (!planning_->interpolator()) display_mode_ = DisplayMode::Demonstration;
+    emit displayChanged();
   });
 }
 
@@ -116,17 +93,16 @@ void Document::loadScene(const SceneReference& ref, std::shared_ptr<const Scene>
 }
 
 std::vector<std::string> Document::newFromBenchmark(const std::string& task_name, const std::string& robot, int pose) {
-  Project p;
-  p.scene.task = task_name;
-  p.scene.robot = robot;
-  p.scene.pose = pose;
+  SceneReference ref;
+  ref.task = task_name;
+  ref.robot = robot;
+  ref.pose = pose;
+  NewProject made = new_benchmark_project(data_dir_, ref);
   std::shared_ptr<const Scene> scene;
   std::shared_ptr<const BenchmarkTask> task;
-  loadScene(p.scene, scene, task);
-  DeckPlacementReport deck;
-  p.demonstration = demonstration_from_benchmark(*task, *scene, PoseSource::Subgoals, &deck);
-  install(std::move(p), std::move(scene), std::move(task), QString());
-  return deck.notes();
+  loadScene(made.project.scene, scene, task);
+  install(std::move(made.project), std::move(scene), std::move(task), QString());
+  return made.deck.notes();
 }
 
 void Document::open(const QString& file) {
@@ -156,95 +132,58 @@ void Document::open(const QString& file) {
 
 void Document::install(Project p, std::shared_ptr<const Scene> scene, std::shared_ptr<const BenchmarkTask> task,
                        const QString& file) {
-  if (runner_.isRunning()) runner_.cancel();
-  if (extractor_.isRunning()) extractor_.cancel();
-  project_ = std::move(p);
+  scene_ref_ = p.scene;
+  demonstration_ = p.demonstration;
   scene_ = std::move(scene);
   task_ = std::move(task);
   file_ = file;
   template_ = false;
   extra_modified_ = false;
-  exported_to_.clear();
   undo_.clear();
   undo_.setClean();
   selected_event_ = -1;
   selected_object_ = -1;
   display_mode_ = DisplayMode::Demonstration;
   playback_t_ = 0.0;
-  issues_ = validate(project_.demonstration);
-  result_.reset();
-  interpolator_.reset();
+  issues_ = validate(demonstration_);
   // Video and camera: a missing or unreadable file is reported on the Video step, not fatal.
-  video_.reset();
-  video_error_.clear();
-  if (!project_.video.empty()) {
-    try {
-      video_ = std::make_unique<perception::VideoReader>(project_.video);
-    } catch (const std::exception& e) {
-      video_error_ = QString::fromUtf8(e.what());
-    }
-  }
-  camera_.reset();
-  camera_error_.clear();
-  if (!project_.camera.empty()) {
-    try {
-      camera_ = std::make_unique<perception::Camera>(perception::load_camera(project_.camera));
-    } catch (const std::exception& e) {
-      camera_error_ = QString::fromUtf8(e.what());
-    }
-  }
-  frame_ = std::clamp(project_.frame, 0, std::max(0, frameCount() - 1));
-  loadResultPath();
+  media_->load(p.video, p.camera, p.markers);
+  frame_ = p.frame;
+  clampFrame();
+  planning_->load(p);
+  extra_modified_ = false;
   emit projectLoaded();
   emit fileChanged();
   emit demonstrationChanged();
   emit selectionChanged();
   emit currentFrameChanged(frame_);
   emit displayChanged();
-  emit videoChanged();
-  emit cameraChanged();
-  emit plannerSettingsChanged();
-  emit resultChanged();
   emit modifiedChanged(false);
-  emit stepsChanged();
 }
 
-void Document::loadResultPath() {
-  if (!project_.result) return;
-  auto r = std::make_shared<PlanResultData>();
-  r->summary = *project_.result;
-  if (!r->summary.path.empty()) {
-    try {
-      Path path = load_path(r->summary.path);
-      if (path.object_ids != project_.demonstration.object_ids || path.robot != project_.scene.robot ||
-          path.robot_pose != project_.scene.pose)
-        throw InputError(r->summary.path, "", "was planned for another scene");
-      r->path = std::move(path);
-    } catch (const std::exception& e) {
-      r->summary.message = std::string("the path file cannot be read: ") + e.what();
-      r->summary.valid = false;
-    }
-  }
-  result_ = r;
-  if (result_->path) interpolator_ = std::make_unique<PathInterpolator>(*scene_, *result_->path);
+void Document::clampFrame() {
+  const int clamped = std::clamp(frame_, 0, std::max(0, frameCount() - 1));
+  if (clamped == frame_) return;
+  frame_ = clamped;
+  emit currentFrameChanged(frame_);
 }
 
 Project Document::project() const {
-  Project p = project_;
+  Project p;
+  p.scene = scene_ref_;
+  p.video = media_->videoFile();
+  p.camera = media_->cameraFile();
+  p.markers = media_->markersFile();
+  p.demonstration = demonstration_;
+  p.planner = planning_->settings();
+  p.result = planning_->storedResult();
   p.frame = frame_;
-  if (result_ && !result_->cancelled) p.result = result_->summary;
-  else p.result.reset();
   return p;
 }
 
 void Document::writeFiles(const QString& file, Project& p) const {
   const std::string path = QFileInfo(file).absoluteFilePath().toStdString();
-  if (result_ && result_->path && p.result) {
-    std::filesystem::path result_file(path);
-    result_file.replace_extension(".path.json");
-    save_path(result_file.string(), *result_->path);
-    p.result->path = result_file.string();
-  }
+  if (p.result) planning_->writePath(path, *p.result);
   save_project(path, p);
 }
 
@@ -256,11 +195,7 @@ void Document::save() {
 void Document::saveAs(const QString& file) {
   Project p = project();
   writeFiles(file, p);
-  if (result_ && p.result) {
-    auto r = std::make_shared<PlanResultData>(*result_);
-    r->summary.path = p.result->path;
-    result_ = r;
-  }
+  if (p.result) planning_->pathWritten(p.result->path);
   file_ = QFileInfo(file).absoluteFilePath();
   template_ = false;
   extra_modified_ = false;
@@ -277,7 +212,7 @@ void Document::saveCopy(const QString& file) const {
 
 QString Document::displayName() const {
   if (!hasProject()) return tr("No project");
-  if (file_.isEmpty()) return tr("Untitled (%1)").arg(q(project_.scene.task));
+  if (file_.isEmpty()) return tr("Untitled (%1)").arg(q(scene_ref_.task));
   return QFileInfo(file_).fileName();
 }
 
@@ -303,34 +238,33 @@ void Document::setModified() {
 // ------------------------------------------------------------------------------ edits
 
 void Document::applyDemonstration(const Demonstration& demo, int selected_event) {
-  project_.demonstration = demo;
-  issues_ = validate(project_.demonstration);
+  demonstration_ = demo;
+  issues_ = validate(demonstration_);
   const int n = static_cast<int>(demo.events.size());
   selected_event_ = selected_event < n ? selected_event : -1;
   if (selected_event_ >= 0) selected_object_ = demo.events[selected_event_].object;
   emit demonstrationChanged();
   emit selectionChanged();
   emit displayChanged();
-  emit stepsChanged();
 }
 
 void Document::pushEdit(const QString& text, const Demonstration& after, int selected_after, int merge_id) {
   long key = -1;
   if (merge_id >= 0) key = static_cast<long>(selected_after) * 4096 + selected_object_;
-  undo_.push(new DemoCommand(this, text, project_.demonstration, after, selected_event_, selected_after, merge_id, key));
+  undo_.push(new DemoCommand(this, text, demonstration_, after, selected_event_, selected_after, merge_id, key));
 }
 
 int Document::addEvent(int frame, int object, EventType type) {
-  if (!hasProject() || object < 0 || object >= static_cast<int>(project_.demonstration.object_ids.size())) return -1;
-  Demonstration d = project_.demonstration;
+  if (!hasProject() || object < 0 || object >= static_cast<int>(demonstration_.object_ids.size())) return -1;
+  Demonstration d = demonstration_;
   const int index = static_cast<int>(insert_event(d, new_event_at(d, frame, object, type)));
   pushEdit(tr("Add %1 of %2 at frame %3").arg(type_word(type), q(d.object_ids[object])).arg(frame), d, index);
   return index;
 }
 
 void Document::removeEvent(int index) {
-  if (index < 0 || index >= static_cast<int>(project_.demonstration.events.size())) return;
-  Demonstration d = project_.demonstration;
+  if (index < 0 || index >= static_cast<int>(demonstration_.events.size())) return;
+  Demonstration d = demonstration_;
   const ContactEvent& e = d.events[index];
   const QString text =
       tr("Delete %1 of %2 at frame %3").arg(type_word(e.type), q(d.object_ids[e.object])).arg(e.frame);
@@ -339,10 +273,10 @@ void Document::removeEvent(int index) {
 }
 
 void Document::moveEvent(int index, int frame) {
-  if (index < 0 || index >= static_cast<int>(project_.demonstration.events.size())) return;
+  if (index < 0 || index >= static_cast<int>(demonstration_.events.size())) return;
   frame = std::max(0, frame);
-  if (project_.demonstration.events[index].frame == frame) return;
-  Demonstration d = project_.demonstration;
+  if (demonstration_.events[index].frame == frame) return;
+  Demonstration d = demonstration_;
   const ContactEvent& e = d.events[index];
   const QString text = tr("Move %1 of %2 from frame %3 to %4")
                            .arg(type_word(e.type), q(d.object_ids[e.object]))
@@ -353,7 +287,7 @@ void Document::moveEvent(int index, int frame) {
 }
 
 void Document::setObjectPose(int event, int object, const Pose& world_pose, int merge_key) {
-  const Demonstration& cur = project_.demonstration;
+  const Demonstration& cur = demonstration_;
   if (event < 0 || event >= static_cast<int>(cur.events.size()) || object < 0 ||
       object >= static_cast<int>(cur.object_ids.size()))
     return;
@@ -378,10 +312,10 @@ void Document::setObjectPose(int event, int object, const Pose& world_pose, int 
 }
 
 void Document::setEventConfidence(int event, double confidence) {
-  if (event < 0 || event >= static_cast<int>(project_.demonstration.events.size())) return;
-  Demonstration d = project_.demonstration;
+  if (event < 0 || event >= static_cast<int>(demonstration_.events.size())) return;
+  Demonstration d = demonstration_;
   d.events[event].confidence = std::clamp(confidence, 0.0, 1.0);
-  undo_.push(new DemoCommand(this, tr("Set confidence"), project_.demonstration, d, selected_event_, selected_event_,
+  undo_.push(new DemoCommand(this, tr("Set confidence"), demonstration_, d, selected_event_, selected_event_,
                              kMergeConfidence, event));
 }
 
@@ -392,17 +326,17 @@ void Document::replaceDemonstration(const Demonstration& demo, const QString& te
 // ------------------------------------------------------------------ selection and time
 
 void Document::selectEvent(int index) {
-  const int n = static_cast<int>(project_.demonstration.events.size());
+  const int n = static_cast<int>(demonstration_.events.size());
   if (index >= n) index = -1;
   const bool changed = index != selected_event_;
   selected_event_ = index;
-  if (index >= 0) selected_object_ = project_.demonstration.events[index].object;
+  if (index >= 0) selected_object_ = demonstration_.events[index].object;
   if (changed || index >= 0) emit selectionChanged();
-  if (index >= 0) setCurrentFrame(project_.demonstration.events[index].frame);
+  if (index >= 0) setCurrentFrame(demonstration_.events[index].frame);
 }
 
 void Document::selectObject(int object) {
-  if (object >= static_cast<int>(project_.demonstration.object_ids.size())) object = -1;
+  if (object >= static_cast<int>(demonstration_.object_ids.size())) object = -1;
   if (object == selected_object_) return;
   selected_object_ = object;
   emit selectionChanged();
@@ -410,7 +344,7 @@ void Document::selectObject(int object) {
 }
 
 int Document::editEvent() const {
-  const auto& events = project_.demonstration.events;
+  const auto& events = demonstration_.events;
   if (selected_event_ >= 0 && selected_event_ < static_cast<int>(events.size())) return selected_event_;
   if (events.empty()) return -1;
   int last = 0;
@@ -430,15 +364,15 @@ void Document::setCurrentFrame(int frame) {
 }
 
 int Document::frameCount() const {
-  if (video_) return std::max(1, video_->frame_count());
+  if (const perception::VideoReader* v = media_->video()) return std::max(1, v->frame_count());
   int n = task_ ? task_->frames : 1;
-  for (const auto& e : project_.demonstration.events) n = std::max(n, e.frame + 1);
+  for (const auto& e : demonstration_.events) n = std::max(n, e.frame + 1);
   return std::max(1, n);
 }
 
 double Document::fps() const {
-  if (video_ && video_->fps() > 0) return video_->fps();
-  return project_.demonstration.fps > 0 ? project_.demonstration.fps : 30.0;
+  if (const perception::VideoReader* v = media_->video(); v && v->fps() > 0) return v->fps();
+  return demonstration_.fps > 0 ? demonstration_.fps : 30.0;
 }
 
 void Document::setPlaybackT(double t) {
@@ -464,233 +398,16 @@ Eigen::VectorXd Document::initialConfiguration() const {
 
 PoseList Document::demoPosesAt(double frame) const {
   if (!scene_) return {};
-  return demo_poses_at_frame(*scene_, project_.demonstration, frame, initialConfiguration());
+  return demo_poses_at_frame(*scene_, demonstration_, frame, initialConfiguration());
 }
 
 SceneState Document::displayState() const {
   SceneState s;
   if (!scene_) return s;
-  if (display_mode_ == DisplayMode::Result && interpolator_) return interpolator_->at(playback_t_);
+  if (display_mode_ == DisplayMode::Result && planning_->interpolator()) return planning_->interpolator()->at(playback_t_);
   s.q = initialConfiguration();
   s.objects = demoPosesAt(frame_);
   return s;
-}
-
-// ----------------------------------------------------------------------- video, camera
-
-void Document::setVideo(const QString& file) {
-  project_.video = file.isEmpty() ? std::string() : QFileInfo(file).absoluteFilePath().toStdString();
-  video_.reset();
-  video_error_.clear();
-  if (!project_.video.empty()) {
-    try {
-      video_ = std::make_unique<perception::VideoReader>(project_.video);
-    } catch (const std::exception& e) {
-      video_error_ = QString::fromUtf8(e.what());
-    }
-  }
-  setModified();
-  frame_ = std::clamp(frame_, 0, std::max(0, frameCount() - 1));
-  emit videoChanged();
-  emit currentFrameChanged(frame_);
-  emit displayChanged();
-  emit stepsChanged();
-}
-
-void Document::setCamera(const QString& file) {
-  project_.camera = file.isEmpty() ? std::string() : QFileInfo(file).absoluteFilePath().toStdString();
-  camera_.reset();
-  camera_error_.clear();
-  if (!project_.camera.empty()) {
-    try {
-      camera_ = std::make_unique<perception::Camera>(perception::load_camera(project_.camera));
-    } catch (const std::exception& e) {
-      camera_error_ = QString::fromUtf8(e.what());
-    }
-  }
-  setModified();
-  emit cameraChanged();
-  emit stepsChanged();
-}
-
-void Document::setMarkers(const QString& file) {
-  project_.markers = file.isEmpty() ? std::string() : QFileInfo(file).absoluteFilePath().toStdString();
-  setModified();
-  emit stepsChanged();
-}
-
-QString Document::extractionBlocker() const {
-  if (!hasProject()) return tr("Open a project first");
-  if (extractor_.isRunning()) return tr("Detection is running");
-  if (!video_) return tr("Open the video first (File > Open Video…)");
-  if (!camera_) return tr("Open the camera calibration first (File > Open Camera Calibration…)");
-  if (project_.markers.empty()) return tr("Open the marker scene first (File > Open Marker Scene…): which markers are on which part");
-  return {};
-}
-
-bool Document::startExtraction() {
-  if (!extractionBlocker().isEmpty()) return false;
-  ExtractionJob job;
-  job.video = project_.video;
-  job.camera = project_.camera;
-  job.markers = project_.markers;
-  for (const auto& o : scene_->objects) job.object_ids.push_back(o.id);
-  job.task = project_.scene.task;
-  return extractor_.start(std::move(job));
-}
-
-// ----------------------------------------------------------------------------- planning
-
-void Document::setPlannerSettings(const PlannerSettings& s) {
-  project_.planner = s;
-  setModified();
-  emit plannerSettingsChanged();
-}
-
-bool Document::startPlanning() {
-  if (!hasProject() || runner_.isRunning() || !issues_.empty()) return false;
-  PlanJob job;
-  job.scene = scene_;
-  job.demonstration = project_.demonstration;
-  job.params = project_.planner.solve_params();
-  job.task = project_.scene.task;
-  job.robot = project_.scene.robot;
-  job.robot_pose = project_.scene.pose;
-  return runner_.start(std::move(job));
-}
-
-void Document::onPlanFinished(const PlanOutcome& o) {
-  auto r = std::make_shared<PlanResultData>();
-  ResultSummary& s = r->summary;
-  s.demonstration_digest = demonstration_digest(project_.demonstration);
-  if (!o.error.empty()) {
-    s.message = o.error;
-  } else {
-    const PlanResult& p = o.result.plan;
-    s.solved = p.solved;
-    s.planning_time_s = p.planning_time_s;
-    s.iterations = p.iterations;
-    s.trees = p.trees;
-    s.nodes = p.nodes;
-    r->unsampled_transitions = p.unsampled_transitions;
-    r->infeasible_picks = o.infeasible_picks;
-    r->state_nodes = p.state_nodes;
-    r->cancelled = p.cancelled;
-    if (o.graph)
-      for (const auto& st : o.graph->states) r->state_names.push_back(st.name);
-    if (p.solved) {
-      const ValidationReport& v = o.result.validation;
-      s.valid = v.valid;
-      s.message = v.message;
-      s.validated_against = o.validation_task.source;
-      s.length_robot_rad = v.length.robot;
-      s.length_object_m = v.length.object_translation;
-      s.length_object_rad = v.length.object_rotation;
-      s.grasps = v.grasps;
-      s.shortened = o.result.shortened;
-      if (!o.result.shortcut_rejection.empty())
-        r->shortcut_note = "shortened path dropped: " + o.result.shortcut_rejection;
-      r->path = p.path;
-    } else {
-      s.message = p.message;
-    }
-  }
-  result_ = r;
-  interpolator_.reset();
-  if (result_->path) interpolator_ = std::make_unique<PathInterpolator>(*scene_, *result_->path);
-  playback_t_ = 0.0;
-  setModified();
-  emit resultChanged();
-  emit stepsChanged();
-  emit displayChanged();
-}
-
-bool Document::resultStale() const {
-  return result_ && !result_->cancelled &&
-         result_->summary.demonstration_digest != demonstration_digest(project_.demonstration);
-}
-
-void Document::clearResult() {
-  result_.reset();
-  interpolator_.reset();
-  display_mode_ = DisplayMode::Demonstration;
-  setModified();
-  emit resultChanged();
-  emit stepsChanged();
-  emit displayChanged();
-}
-
-void Document::markExported(const QString& file) {
-  exported_to_ = file;
-  emit stepsChanged();
-}
-
-// -------------------------------------------------------------------------------- steps
-
-StepState Document::stepState(Step step) const {
-  if (!hasProject()) return {StepStatus::None, tr("Open a project (File > Open) or the sample")};
-  const Demonstration& d = project_.demonstration;
-  switch (step) {
-    case Step::Video: {
-      if (!video_error_.isEmpty())
-        return {StepStatus::Error, video_error_ + tr(" — File > Open Video… to locate the recording")};
-      if (!video_)
-        return {StepStatus::Warning,
-                tr("No video: the events come from the benchmark's labels. File > Open Video… adds the recording")};
-      QString msg = tr("%1: %2 frames at %3 fps")
-                        .arg(QFileInfo(videoPath()).fileName())
-                        .arg(video_->frame_count())
-                        .arg(video_->fps(), 0, 'g', 3);
-      if (!camera_error_.isEmpty()) return {StepStatus::Warning, msg + tr("; camera: ") + camera_error_};
-      if (!camera_) return {StepStatus::Warning, msg + tr("; no camera calibration: outlines cannot be drawn")};
-      if (!camera_->world_T_camera)
-        return {StepStatus::Warning, msg + tr("; the camera has no pose in the world: outlines cannot be drawn")};
-      return {StepStatus::Ok, msg + tr("; camera calibrated")};
-    }
-    case Step::Events: {
-      if (!issues_.empty()) {
-        QString msg = q(issues_.front().message);
-        if (issues_.size() > 1) msg += tr(" (and %1 more)").arg(issues_.size() - 1);
-        return {StepStatus::Error, msg};
-      }
-      int low = 0;
-      for (const auto& e : d.events) low += e.confidence < kLowConfidence;
-      if (low > 0) return {StepStatus::Warning, tr("%1 event(s) below %2% confidence: check them").arg(low).arg(kLowConfidence * 100)};
-      return {StepStatus::Ok, tr("%1 events on %2 parts, all rules hold").arg(d.events.size()).arg(d.object_ids.size())};
-    }
-    case Step::Poses: {
-      if (!issues_.empty()) return {StepStatus::None, tr("Fix the events first")};
-      try {
-        const ConstraintGraph g = build_constraint_graph(*scene_, d);
-        return {StepStatus::Ok, tr("%1 placements and %2 grasp states")
-                                    .arg(g.states_of_kind(StateKind::Placement).size())
-                                    .arg(g.states_of_kind(StateKind::Grasp).size())};
-      } catch (const std::exception& e) {
-        return {StepStatus::Error, QString::fromUtf8(e.what())};
-      }
-    }
-    case Step::Plan: {
-      if (runner_.isRunning()) return {StepStatus::Busy, tr("Planning…")};
-      if (!result_) return {StepStatus::None, tr("Not planned yet: press Plan (F5)")};
-      const ResultSummary& s = result_->summary;
-      if (result_->cancelled) return {StepStatus::Warning, tr("Cancelled: ") + q(s.message)};
-      if (resultStale()) return {StepStatus::Warning, tr("The demonstration changed since the last plan: plan again")};
-      if (!s.solved && !result_->infeasible_picks.empty()) {
-        const std::string first = result_->infeasible_picks.substr(0, result_->infeasible_picks.find(':'));
-        return {StepStatus::Error, tr("No path: %1 from this robot base pose (see the Planner panel)").arg(q(first))};
-      }
-      if (!s.solved) return {StepStatus::Error, tr("No path: ") + q(s.message)};
-      if (!s.valid) return {StepStatus::Warning, tr("The validator rejects the path: ") + q(s.message)};
-      return {StepStatus::Ok, tr("Valid path found in %1 s").arg(s.planning_time_s, 0, 'f', 2)};
-    }
-    case Step::Export: {
-      if (!exported_to_.isEmpty()) return {StepStatus::Ok, tr("Exported to %1").arg(exported_to_)};
-      if (result_ && result_->path && result_->summary.valid && !resultStale())
-        return {StepStatus::None, tr("Ready to export: File > Export Program… (Ctrl+E)")};
-      return {StepStatus::None, tr("Plan a valid path first")};
-    }
-  }
-  return {};
 }
 
 }  // namespace demoplan::ui

@@ -1,52 +1,38 @@
 #pragma once
-// The open project as the whole UI sees it: the project data, the scene it refers to (loaded
-// with visual meshes), the demonstration with an undo stack for every edit, the selection, the
-// playhead, the video and camera, the planner and its last result. Widgets read from it and
-// change it only through its methods; it tells them what changed through signals.
+// The open project as the whole UI sees it: the project file, the scene it refers to (loaded
+// with visual meshes), the demonstration with an undo stack for every edit, the selection and
+// the playhead. What belongs to one step lives in its own part, owned here: the recording
+// (Media), event detection (EventDetection), planning and its result (PlanningController), and
+// how each step stands (StepStatusModel). Widgets read from these and change them only through
+// their methods; signals tell them what changed.
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
 #include <memory>
-#include <optional>
 
 #include "core/demo/benchmark_scene.h"
-#include "core/planning/path_interpolation.h"
-#include "ui/document/extraction_runner.h"
-#include "ui/document/plan_runner.h"
-#include "ui/project/project.h"
-
-namespace demoplan::perception {
-class VideoReader;
-struct Camera;
-}  // namespace demoplan::perception
+#include "core/project/project.h"
+#include "ui/document/event_detection.h"
+#include "ui/document/media.h"
+#include "ui/document/planning_controller.h"
+#include "ui/document/step_status.h"
 
 namespace demoplan::ui {
-
-// The last planning result held in memory: the summary the project stores, and the path.
-struct PlanResultData {
-  ResultSummary summary;
-  std::optional<Path> path;  // absent when planning failed or the path file is missing
-  std::vector<std::string> unsampled_transitions;
-  std::string infeasible_picks;  // one line per pick that cannot be done from this base pose
-  std::vector<std::string> state_names;
-  std::vector<size_t> state_nodes;
-  std::string shortcut_note;
-  bool cancelled = false;
-};
-
-// One step of the operator's job (UX.md), with how it stands.
-enum class Step { Video = 0, Events, Poses, Plan, Export };
-enum class StepStatus { None, Ok, Warning, Error, Busy };
-struct StepState {
-  StepStatus status = StepStatus::None;
-  QString message;  // one line: what is wrong and what to do next
-};
 
 class Document : public QObject {
   Q_OBJECT
 public:
   explicit Document(std::string default_data_dir, QObject* parent = nullptr);
   ~Document() override;
+
+  // ---- the parts
+  Media* media() { return media_; }
+  const Media* media() const { return media_; }
+  EventDetection* detection() { return detection_; }
+  PlanningController* planning() { return planning_; }
+  const PlanningController* planning() const { return planning_; }
+  StepStatusModel* steps() { return steps_; }
+  const StepStatusModel* steps() const { return steps_; }
 
   // ---- files (throw InputError naming file and field; the document is unchanged on error)
   // Returns one line per object riding on the robot's deck (waiter): where it rides and why.
@@ -66,7 +52,7 @@ public:
   void setFilePath(const QString& file);
   bool isModified() const;
   void setModified();                 // a change outside the undo stack
-  // Takes the project as it stands now (demonstration, settings, playhead).
+  // Takes the project as it stands now (demonstration, files, settings, result, playhead).
   Project project() const;
 
   // ---- scene
@@ -74,10 +60,10 @@ public:
   const Scene& scene() const { return *scene_; }
   std::shared_ptr<const Scene> sharedScene() const { return scene_; }
   const BenchmarkTask& task() const { return *task_; }
-  const SceneReference& sceneReference() const { return project_.scene; }
+  const SceneReference& sceneReference() const { return scene_ref_; }
 
   // ---- demonstration and edits (every edit goes through the undo stack)
-  const Demonstration& demonstration() const { return project_.demonstration; }
+  const Demonstration& demonstration() const { return demonstration_; }
   const std::vector<DemonstrationIssue>& issues() const { return issues_; }
   QUndoStack* undoStack() { return &undo_; }
   int addEvent(int frame, int object, EventType type);  // returns its index
@@ -114,68 +100,29 @@ public:
   Eigen::VectorXd initialConfiguration() const;
   PoseList demoPosesAt(double frame) const;
 
-  // ---- video and camera
-  QString videoPath() const { return QString::fromStdString(project_.video); }
-  QString cameraPath() const { return QString::fromStdString(project_.camera); }
-  void setVideo(const QString& file);   // opens it; the error is in videoError()
-  void setCamera(const QString& file);  // loads it; the error is in cameraError()
-  perception::VideoReader* video() const { return video_.get(); }
-  const perception::Camera* camera() const { return camera_.get(); }
-  QString videoError() const { return video_error_; }
-  QString cameraError() const { return camera_error_; }
-  // The marker scene (which ArUco markers are on which part), to detect the events in the video.
-  QString markersPath() const { return QString::fromStdString(project_.markers); }
-  void setMarkers(const QString& file);
-
-  // ---- event detection (perception): replaces the demonstration as one undoable edit
-  ExtractionRunner* extractor() { return &extractor_; }
-  // What is missing to detect events; empty when startExtraction() can run.
-  QString extractionBlocker() const;
-  bool startExtraction();
-
-  // ---- planning
-  const PlannerSettings& plannerSettings() const { return project_.planner; }
-  void setPlannerSettings(const PlannerSettings& s);
-  PlanRunner* planner() { return &runner_; }
-  bool startPlanning();  // false when the demonstration has issues or a job runs
-  const PlanResultData* result() const { return result_.get(); }
-  bool resultStale() const;
-  const PathInterpolator* interpolator() const { return interpolator_.get(); }
-  void clearResult();
-
-  // ---- the five steps
-  StepState stepState(Step step) const;
-  void markExported(const QString& file);
-
 signals:
   void projectLoaded();
   void demonstrationChanged();
   void selectionChanged();
   void currentFrameChanged(int frame);
-  void displayChanged();  // the display state changed (frame, playback, pose edit)
+  void displayChanged();  // the display state changed (frame, playback, pose edit, result)
   void modifiedChanged(bool modified);
   void fileChanged();
-  void videoChanged();
-  void cameraChanged();
-  void plannerSettingsChanged();
-  void resultChanged();
-  void stepsChanged();
   void saved(const QString& file);
-  void extractionDone(const ExtractionOutcome& outcome);
 
 private:
   void loadScene(const SceneReference& ref, std::shared_ptr<const Scene>& scene,
                  std::shared_ptr<const BenchmarkTask>& task) const;
   void install(Project project, std::shared_ptr<const Scene> scene, std::shared_ptr<const BenchmarkTask> task,
                const QString& file);
-  void onPlanFinished(const PlanOutcome& outcome);
-  void loadResultPath();
   void writeFiles(const QString& file, Project& p) const;
   void pushEdit(const QString& text, const Demonstration& after, int selected_after, int merge_id = -1);
+  void clampFrame();
 
   std::string data_dir_;
   std::unique_ptr<MeshCache> mesh_cache_;
-  Project project_;
+  SceneReference scene_ref_;
+  Demonstration demonstration_;
   QString file_;
   bool template_ = false;
   bool extra_modified_ = false;
@@ -188,14 +135,11 @@ private:
   int frame_ = 0;
   DisplayMode display_mode_ = DisplayMode::Demonstration;
   double playback_t_ = 0.0;
-  std::unique_ptr<perception::VideoReader> video_;
-  std::unique_ptr<perception::Camera> camera_;
-  QString video_error_, camera_error_;
-  PlanRunner runner_;
-  ExtractionRunner extractor_;
-  std::shared_ptr<const PlanResultData> result_;
-  std::unique_ptr<PathInterpolator> interpolator_;
-  QString exported_to_;
+  // Children of this QObject, made in the constructor in this order.
+  Media* media_ = nullptr;
+  PlanningController* planning_ = nullptr;
+  EventDetection* detection_ = nullptr;
+  StepStatusModel* steps_ = nullptr;
 };
 
 }  // namespace demoplan::ui

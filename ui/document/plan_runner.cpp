@@ -5,12 +5,10 @@
 #include <chrono>
 
 #include "core/error.h"
-#include "core/graph/pick_feasibility.h"
 
 namespace demoplan::ui {
 
 namespace {
-constexpr int kFeasibilitySamples = 50;  // per transition, after a failed plan (about a second)
 QVector3D to_qt(const Eigen::Vector3d& p) { return QVector3D(float(p.x()), float(p.y()), float(p.z())); }
 }  // namespace
 
@@ -46,7 +44,6 @@ bool PlanRunner::start(PlanJob job) {
   emit started();
 
   auto work = [self, generation, cancel, done, job = std::move(job)]() mutable {
-    const auto t0 = std::chrono::steady_clock::now();
     // Delivers `f` on the GUI thread, unless the runner is gone or the job was dropped.
     auto post = [&](auto f) {
       if (cancel->load()) return;
@@ -62,12 +59,11 @@ bool PlanRunner::start(PlanJob job) {
     auto outcome = std::make_shared<PlanOutcome>();
     try {
       const Scene& scene = *job.scene;
-      auto graph = std::make_shared<const ConstraintGraph>(build_constraint_graph(scene, job.demonstration));
-      outcome->graph_built = true;
-      outcome->graph = graph;
-      post([graph](PlanRunner& r) { emit r.graphReady(graph); });
-      const CollisionChecker checker(scene);
-      outcome->validation_task = validation_task(job.demonstration, scene);
+      const PlanningProblem problem =
+          make_planning_problem(job.scene, job.demonstration, validation_task(job.demonstration, scene));
+      outcome->graph = problem.graph;
+      outcome->validated_against = problem.validation.source;
+      post([graph = problem.graph](PlanRunner& r) { emit r.graphReady(graph); });
       auto on_progress = [&](const PlannerProgress& p) {
         auto snap = std::make_shared<PlanSnapshot>();
         snap->elapsed_s = p.elapsed_s;
@@ -87,17 +83,14 @@ bool PlanRunner::start(PlanJob job) {
           emit r.progress(r.last_);
         });
       };
-      outcome->result = solve(scene, *graph, checker, outcome->validation_task, job.params, on_progress, cancel.get());
-      Path& path = outcome->result.plan.path;
+      outcome->report = run_plan_job(problem, job.settings, on_progress, cancel.get());
+      Path& path = outcome->report.path;
       path.task = job.task;
       path.robot = job.robot;
       path.robot_pose = job.robot_pose;
-      if (!outcome->result.plan.solved && !outcome->result.plan.cancelled && !cancel->load())
-        outcome->infeasible_picks = assess_picks(scene, *graph, checker, kFeasibilitySamples).summary(scene);
     } catch (const std::exception& e) {
       outcome->error = e.what();
     }
-    outcome->wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     post([outcome](PlanRunner& r) {
       r.running_ = false;
       emit r.finished(*outcome);

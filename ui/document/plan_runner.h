@@ -1,7 +1,8 @@
 #pragma once
-// Runs the planning job (constraint graph, guided planner, shortcut, validator: core's solve())
-// on a background thread and reports to the GUI thread: the graph's states when it is built,
-// progress snapshots with the trees' new edges as gripper positions, and the outcome.
+// Runs core's plan job (core/planning/plan_job.h: the planning problem's constraint graph, the
+// planner, shortcut, validator, and the reason after a failure) on a background thread and
+// reports to the GUI thread: the graph when it is built, progress snapshots with the trees' new
+// edges as gripper positions, and the outcome.
 //
 // Cancel answers at once: the runner drops the job (its late result is ignored) and is idle
 // again; the planner sees the flag within a few ms, the shortcut/validator phases finish on
@@ -14,14 +15,14 @@
 #include <vector>
 
 #include "core/graph/constraint_graph.h"
-#include "core/planning/solve.h"
+#include "core/planning/plan_job.h"
 
 namespace demoplan::ui {
 
 struct PlanJob {
   std::shared_ptr<const Scene> scene;
   Demonstration demonstration;
-  SolveParams params;
+  PlannerSettings settings;
   std::string task, robot;
   int robot_pose = 0;
 };
@@ -49,15 +50,10 @@ struct PlanSnapshot {
 };
 
 struct PlanOutcome {
-  bool graph_built = false;
   std::string error;  // the demonstration cannot be planned (graph construction failed)
-  std::shared_ptr<const ConstraintGraph> graph;
-  ValidationTask validation_task;
-  SolveResult result;  // result.plan.path carries task, robot and pose
-  // After a failure (not a cancel): the picks that cannot be done from this base pose, one line
-  // each with the reason; empty when every pick can.
-  std::string infeasible_picks;
-  double wall_time_s = 0.0;
+  std::shared_ptr<const ConstraintGraph> graph;  // null when it could not be built
+  std::string validated_against;                 // the validation task's source
+  PlanReport report;  // report.path carries task, robot and pose
 };
 
 class PlanRunner : public QObject {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/planning/path.h"
+#include "core/path/path.h"
 #include "core/scene/scene.h"
 
 namespace demoplan::ui {

@@ -75,7 +75,7 @@ MainWindow::MainWindow(MainWindowOptions options, QWidget* parent)
 
   connect(doc_, &Document::fileChanged, this, &MainWindow::updateTitle);
   connect(doc_, &Document::modifiedChanged, this, &MainWindow::updateTitle);
-  connect(doc_, &Document::stepsChanged, this, &MainWindow::updateSteps);
+  connect(doc_->steps(), &StepStatusModel::changed, this, &MainWindow::updateSteps);
   connect(doc_, &Document::currentFrameChanged, this, &MainWindow::updateStatus);
   connect(doc_, &Document::displayChanged, this, &MainWindow::updateStatus);
   connect(doc_, &Document::saved, this, [this] {
@@ -87,7 +87,7 @@ MainWindow::MainWindow(MainWindowOptions options, QWidget* parent)
     updateSteps();
     updateStatus();
   });
-  connect(doc_->planner(), &PlanRunner::progress, this, [this] { updateSteps(); });
+  connect(doc_->planning()->runner(), &PlanRunner::progress, this, [this] { updateSteps(); });
   connect(scene_view_, &SceneView::objectPicked, this, [this](int o) {
     if (o >= 0) {
       inspector_dock_->raise();
@@ -107,7 +107,7 @@ MainWindow::MainWindow(MainWindowOptions options, QWidget* parent)
       if (qobject_cast<ExportDialog*>(w)) return step_bar_->setCurrent(Step::Export);
     }
   });
-  connect(doc_->planner(), &PlanRunner::started, this, [this] { step_bar_->setCurrent(Step::Plan); });
+  connect(doc_->planning()->runner(), &PlanRunner::started, this, [this] { step_bar_->setCurrent(Step::Plan); });
   connect(result_, &ResultPanel::exportRequested, this, [this] { export_action_->trigger(); });
 
   autosave_timer_ = new QTimer(this);
@@ -169,11 +169,11 @@ void MainWindow::createDocks() {
   resizeDocks({inspector_dock_, planner_dock_}, {330, 950}, Qt::Horizontal);
   resizeDocks({timeline_dock_, inspector_dock_}, {118, 236}, Qt::Vertical);
   // Plan brings the planner forward; a finished plan its result.
-  connect(doc_->planner(), &PlanRunner::started, this, [this] {
+  connect(doc_->planning()->runner(), &PlanRunner::started, this, [this] {
     planner_dock_->show();
     planner_dock_->raise();
   });
-  connect(doc_->planner(), &PlanRunner::finished, this, [this] {
+  connect(doc_->planning()->runner(), &PlanRunner::finished, this, [this] {
     result_dock_->show();
     result_dock_->raise();
   });
@@ -209,7 +209,7 @@ void MainWindow::createActions() {
     if (!doc_->hasProject()) return;
     const QString f = QFileDialog::getOpenFileName(this, tr("Open marker scene"), QFileInfo(doc_->filePath()).absolutePath(),
                                                    tr("Marker scenes (*.json);;All files (*)"));
-    if (!f.isEmpty()) doc_->setMarkers(f);
+    if (!f.isEmpty()) doc_->media()->setMarkers(f);
   })->setStatusTip(tr("Which ArUco markers are on which part: needed to detect the events in the video"));
   file->addSeparator();
   export_action_ = file->addAction(tr("&Export Program…"), this, [this] { showExportDialog(); });
@@ -245,7 +245,7 @@ void MainWindow::createActions() {
   auto* detect = edit->addAction(tr("Detect &Events in the Video"), this, [this] {
     timeline_dock_->show();
     timeline_dock_->raise();
-    if (!doc_->startExtraction()) reportError(tr("Detect events"), doc_->extractionBlocker());
+    if (!doc_->detection()->start()) reportError(tr("Detect events"), doc_->detection()->blocker());
   });
   detect->setShortcut(QKeySequence(QStringLiteral("Ctrl+D")));
   auto* next_issue = edit->addAction(tr("Go to the &Broken Rule"), this, [this] { timeline_->jumpToIssue(0); });
@@ -278,7 +278,7 @@ void MainWindow::createActions() {
     return a;
   };
   add(play, tr("Play / Pause"), QKeySequence(Qt::Key_Space), [this] {
-    if (doc_->displayMode() == Document::DisplayMode::Result && doc_->interpolator()) result_->togglePlay();
+    if (doc_->displayMode() == Document::DisplayMode::Result && doc_->planning()->interpolator()) result_->togglePlay();
     else transport_->toggle();
   });
   add(play, tr("One Frame Back"), QKeySequence(Qt::Key_Left), [this] { transport_->stepFrames(-1); });
@@ -306,9 +306,9 @@ void MainWindow::createActions() {
   cancel_action_ = add(plan, tr("&Cancel Planning"), QKeySequence(Qt::Key_Escape), [this] { planner_->cancel(); });
   cancel_action_->setIcon(st->standardIcon(QStyle::SP_BrowserStop));
   cancel_action_->setEnabled(false);
-  connect(doc_->planner(), &PlanRunner::started, this, [this] { cancel_action_->setEnabled(true); });
-  connect(doc_->planner(), &PlanRunner::finished, this, [this] { cancel_action_->setEnabled(false); });
-  connect(doc_->planner(), &PlanRunner::cancelled, this, [this] { cancel_action_->setEnabled(false); });
+  connect(doc_->planning()->runner(), &PlanRunner::started, this, [this] { cancel_action_->setEnabled(true); });
+  connect(doc_->planning()->runner(), &PlanRunner::finished, this, [this] { cancel_action_->setEnabled(false); });
+  connect(doc_->planning()->runner(), &PlanRunner::cancelled, this, [this] { cancel_action_->setEnabled(false); });
 
   // ---- Help
   QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -345,12 +345,12 @@ void MainWindow::updateTitle() {
 }
 
 void MainWindow::updateSteps() {
-  for (int i = 0; i < 5; ++i) step_bar_->setState(Step(i), doc_->stepState(Step(i)));
-  if (doc_->planner()->isRunning()) {
-    const PlanSnapshot& s = doc_->planner()->lastSnapshot();
+  for (int i = 0; i < 5; ++i) step_bar_->setState(Step(i), doc_->steps()->state(Step(i)));
+  if (doc_->planning()->runner()->isRunning()) {
+    const PlanSnapshot& s = doc_->planning()->runner()->lastSnapshot();
     step_bar_->setState(Step::Plan, {StepStatus::Busy, tr("Planning… %1 s, %L2 nodes").arg(s.elapsed_s, 0, 'f', 1).arg(qulonglong(s.nodes))});
   }
-  export_action_->setEnabled(doc_->hasProject() && doc_->result() && doc_->result()->path && !doc_->planner()->isRunning());
+  export_action_->setEnabled(doc_->hasProject() && doc_->planning()->result() && doc_->planning()->result()->path && !doc_->planning()->runner()->isRunning());
 }
 
 void MainWindow::updateStatus() {
@@ -440,11 +440,11 @@ void MainWindow::showStep(Step step) {
       break;
     case Step::Export:
       bring(result_dock_);
-      if (doc_->interpolator()) doc_->setPlaybackT(doc_->playbackT());
+      if (doc_->planning()->interpolator()) doc_->setPlaybackT(doc_->playbackT());
       if (export_action_->isEnabled() && options_.interactive) showExportDialog();
       break;
   }
-  statusBar()->showMessage(doc_->stepState(step).message, 8000);
+  statusBar()->showMessage(doc_->steps()->state(step).message, 8000);
 }
 
 // ----------------------------------------------------------------------------- files
@@ -477,7 +477,7 @@ bool MainWindow::openProject(const QString& file) {
   addRecentFile(file);
   updateTitle();
   statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(doc_->filePath())), 5000);
-  if (!doc_->videoError().isEmpty()) statusBar()->showMessage(doc_->videoError(), 10000);
+  if (!doc_->media()->videoError().isEmpty()) statusBar()->showMessage(doc_->media()->videoError(), 10000);
   return true;
 }
 
@@ -616,10 +616,10 @@ bool MainWindow::openVideo(const QString& file_in) {
                                         tr("Videos (*.mp4 *.avi *.mkv *.mov *.m4v *.webm);;All files (*)"));
     if (file.isEmpty()) return false;
   }
-  doc_->setVideo(file);
-  if (!doc_->videoError().isEmpty()) {
+  doc_->media()->setVideo(file);
+  if (!doc_->media()->videoError().isEmpty()) {
     reportError(tr("Cannot open the video"),
-                doc_->videoError() + tr("\n\nCheck that the file is a complete video (mp4, avi, mkv) and try another."));
+                doc_->media()->videoError() + tr("\n\nCheck that the file is a complete video (mp4, avi, mkv) and try another."));
     return false;
   }
   statusBar()->showMessage(tr("Video %1: %2 frames").arg(QFileInfo(file).fileName()).arg(doc_->frameCount()), 5000);
@@ -635,9 +635,9 @@ bool MainWindow::openCamera(const QString& file_in) {
                                         tr("Camera files (*.json *.yaml *.yml *.xml);;All files (*)"));
     if (file.isEmpty()) return false;
   }
-  doc_->setCamera(file);
-  if (!doc_->cameraError().isEmpty()) {
-    reportError(tr("Cannot read the camera calibration"), doc_->cameraError());
+  doc_->media()->setCamera(file);
+  if (!doc_->media()->cameraError().isEmpty()) {
+    reportError(tr("Cannot read the camera calibration"), doc_->media()->cameraError());
     return false;
   }
   return true;
@@ -755,7 +755,7 @@ void MainWindow::closeEvent(QCloseEvent* e) {
     e->ignore();
     return;
   }
-  if (doc_->planner()->isRunning()) doc_->planner()->cancel();
+  if (doc_->planning()->runner()->isRunning()) doc_->planning()->runner()->cancel();
   QSettings settings;
   settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
   settings.setValue(QStringLiteral("window/state"), saveState());
@@ -793,14 +793,14 @@ void MainWindow::dropEvent(QDropEvent* e) {
 // ------------------------------------------------------------------------------- misc
 
 ExportDialog* MainWindow::showExportDialog() {
-  if (!doc_->result() || !doc_->result()->path) {
+  if (!doc_->planning()->result() || !doc_->planning()->result()->path) {
     reportError(tr("Export"), tr("There is no planned path to export yet: press Plan (F5) first."));
     return nullptr;
   }
   auto* dialog = new ExportDialog(doc_, options_.interactive, this);
   dialog->setAttribute(Qt::WA_DeleteOnClose);
   connect(dialog, &QDialog::accepted, this, [this] {
-    statusBar()->showMessage(doc_->stepState(Step::Export).message, 8000);
+    statusBar()->showMessage(doc_->steps()->state(Step::Export).message, 8000);
   });
   if (options_.interactive) dialog->open();
   else dialog->show();

@@ -11,7 +11,9 @@
 #include <QToolButton>
 #include <QWheelEvent>
 #include <cmath>
+#include <limits>
 
+#include "core/geometry/ray_box.h"
 #include "ui/document/demo_poses.h"
 #include "ui/widgets/style.h"
 
@@ -131,18 +133,8 @@ bool rayTriangle(const QVector3D& o, const QVector3D& d, const QVector3D& v0, co
 }
 
 bool rayBox(const QVector3D& o, const QVector3D& d, const Eigen::AlignedBox3f& box) {
-  float t0 = -1e30f, t1 = 1e30f;
-  for (int i = 0; i < 3; ++i) {
-    if (std::abs(d[i]) < 1e-12f) {
-      if (o[i] < box.min()[i] || o[i] > box.max()[i]) return false;
-      continue;
-    }
-    float a = (box.min()[i] - o[i]) / d[i], b = (box.max()[i] - o[i]) / d[i];
-    if (a > b) std::swap(a, b);
-    t0 = std::max(t0, a);
-    t1 = std::min(t1, b);
-  }
-  return t1 >= std::max(t0, 0.0f);
+  return ray_hits_box(Eigen::Vector3d(o.x(), o.y(), o.z()), Eigen::Vector3d(d.x(), d.y(), d.z()), box.cast<double>(),
+                      0.0, std::numeric_limits<double>::infinity());
 }
 
 double distanceToSegment(const QPointF& p, const QPointF& a, const QPointF& b) {
@@ -198,14 +190,14 @@ SceneView::SceneView(Document* doc, QWidget* parent) : QOpenGLWidget(parent), do
   connect(doc_, &Document::displayChanged, this, redraw);
   connect(doc_, &Document::selectionChanged, this, redraw);
   connect(doc_, &Document::demonstrationChanged, this, redraw);
-  connect(doc_, &Document::resultChanged, this, [this] {
+  connect(doc_->planning(), &PlanningController::resultChanged, this, [this] {
     rebuildPathTrace();
     updateHud();
     update();
   });
-  connect(doc_->planner(), &PlanRunner::started, this, &SceneView::onPlanStarted);
-  connect(doc_->planner(), &PlanRunner::progress, this, &SceneView::onPlanProgress);
-  connect(doc_->planner(), &PlanRunner::graphReady, this, [this](std::shared_ptr<const ConstraintGraph> g) {
+  connect(doc_->planning()->runner(), &PlanRunner::started, this, &SceneView::onPlanStarted);
+  connect(doc_->planning()->runner(), &PlanRunner::progress, this, &SceneView::onPlanProgress);
+  connect(doc_->planning()->runner(), &PlanRunner::graphReady, this, [this](std::shared_ptr<const ConstraintGraph> g) {
     // The start and goal trees' roots.
     if (!scene_) return;
     for (const Eigen::VectorXd* q : {&g->q_start, &g->q_goal}) {
@@ -581,7 +573,7 @@ void SceneView::paintGL() {
   glLineWidth(1.0f);
   drawLines(grid_, GL_LINES, 1, false, true);
   // While the path plays, the trees step back so the robot and the path stand out.
-  const bool playing_path = doc_->displayMode() == Document::DisplayMode::Result && doc_->interpolator();
+  const bool playing_path = doc_->displayMode() == Document::DisplayMode::Result && doc_->planning()->interpolator();
   const float tree_alpha = playing_path ? 0.12f : 1.0f;
   if (show_trees_) {
     drawLines(tree_lines_, GL_LINES, 1, false, true, tree_alpha);
@@ -666,7 +658,7 @@ void SceneView::onPlanProgress(const PlanSnapshot& s) {
 void SceneView::rebuildPathTrace() {
   path_trace_.data.clear();
   path_trace_.dirty = true;
-  const PathInterpolator* interp = doc_->interpolator();
+  const PathInterpolator* interp = doc_->planning()->interpolator();
   if (!interp || !scene_) return;
   for (int i = 0; i <= 400; ++i) {
     const SceneState st = interp->at(i / 400.0);
@@ -691,7 +683,7 @@ void SceneView::updateHud() {
   QString text;
   if (!doc_->hasProject()) {
     text = tr("No project");
-  } else if (doc_->displayMode() == Document::DisplayMode::Result && doc_->interpolator()) {
+  } else if (doc_->displayMode() == Document::DisplayMode::Result && doc_->planning()->interpolator()) {
     text = tr("<b>Planned path</b> · %1%").arg(doc_->playbackT() * 100, 0, 'f', 0);
   } else {
     text = tr("<b>Demonstration</b> · frame %1").arg(doc_->currentFrame());
@@ -699,7 +691,7 @@ void SceneView::updateHud() {
       text += tr(" · <span style='color:#b07d00'>%1</span>")
                   .arg(QString::fromStdString(doc_->demonstration().object_ids[doc_->selectedObject()]));
   }
-  if (doc_->planner()->isRunning() || tree_edges_ > 0)
+  if (doc_->planning()->runner()->isRunning() || tree_edges_ > 0)
     text += tr("<br>trees: %L1 edges, %2 transition roots").arg(qulonglong(tree_edges_)).arg(qulonglong(tree_roots_));
   hud_->setText(text);
   hud_->adjustSize();

@@ -101,7 +101,7 @@ ProgramSettings ExportDialog::settings() const {
 }
 
 void ExportDialog::refreshPreview() {
-  const PlanResultData* r = doc_->result();
+  const PlanResultData* r = doc_->planning()->result();
   if (!doc_->hasProject() || !r || !r->path) {
     summary_->setText(tr("No planned path: plan first (F5)."));
     preview_->clear();
@@ -145,7 +145,7 @@ void ExportDialog::refreshPreview() {
 }
 
 bool ExportDialog::saveTo(const QString& file_in) {
-  const PlanResultData* r = doc_->result();
+  const PlanResultData* r = doc_->planning()->result();
   if (!r || !r->path) return false;
   const ProgramSettings s = settings();
   QString file = file_in;
@@ -165,7 +165,7 @@ bool ExportDialog::saveTo(const QString& file_in) {
                           .arg(kErrorColor.name(), QString::fromStdString(out.error).toHtmlEscaped()));
     return false;
   }
-  doc_->markExported(QString::fromStdString(out.files.empty() ? file.toStdString() : out.files.front()));
+  doc_->steps()->markExported(QString::fromStdString(out.files.empty() ? file.toStdString() : out.files.front()));
   return true;
 }
 

@@ -139,21 +139,21 @@ PlannerPanel::PlannerPanel(Document* doc, QWidget* parent) : QWidget(parent), do
   connect(seed_, &QSpinBox::valueChanged, this, &PlannerPanel::storeSettings);
   connect(max_iterations_, &QSpinBox::valueChanged, this, &PlannerPanel::storeSettings);
   connect(shortcut_, &QCheckBox::toggled, this, &PlannerPanel::storeSettings);
-  connect(defaults_, &QPushButton::clicked, this, [this] { doc_->setPlannerSettings(PlannerSettings{}); });
+  connect(defaults_, &QPushButton::clicked, this, [this] { doc_->planning()->setSettings(PlannerSettings{}); });
   connect(plan_, &QPushButton::clicked, this, &PlannerPanel::plan);
   connect(cancel_, &QPushButton::clicked, this, &PlannerPanel::cancel);
-  connect(doc_, &Document::plannerSettingsChanged, this, &PlannerPanel::loadSettings);
+  connect(doc_->planning(), &PlanningController::settingsChanged, this, &PlannerPanel::loadSettings);
   connect(doc_, &Document::projectLoaded, this, [this] {
     loadSettings();
     onResult();
   });
-  connect(doc_, &Document::stepsChanged, this, [this] {
-    plan_->setEnabled(doc_->hasProject() && !doc_->planner()->isRunning() && doc_->issues().empty());
+  connect(doc_->steps(), &StepStatusModel::changed, this, [this] {
+    plan_->setEnabled(doc_->hasProject() && !doc_->planning()->runner()->isRunning() && doc_->issues().empty());
     plan_->setToolTip(doc_->issues().empty() ? tr("Plan a robot motion for the demonstration (F5). Runs in the background.")
                                              : tr("Fix the demonstration first: %1")
                                                    .arg(QString::fromStdString(doc_->issues().front().message)));
   });
-  PlanRunner* runner = doc_->planner();
+  PlanRunner* runner = doc_->planning()->runner();
   connect(runner, &PlanRunner::started, this, [this] {
     setRunning(true);
     state_names_.clear();
@@ -173,14 +173,14 @@ PlannerPanel::PlannerPanel(Document* doc, QWidget* parent) : QWidget(parent), do
     progress_->setFormat(tr("cancelled after %1 s").arg(s.elapsed_s, 0, 'f', 1));
     message_->setText(tr("Cancelled after %L1 iterations. Press Plan to start again.").arg(s.iterations));
   });
-  connect(doc_, &Document::resultChanged, this, &PlannerPanel::onResult);
+  connect(doc_->planning(), &PlanningController::resultChanged, this, &PlannerPanel::onResult);
   loadSettings();
   setRunning(false);
 }
 
 void PlannerPanel::loadSettings() {
   loading_ = true;
-  const PlannerSettings& s = doc_->plannerSettings();
+  const PlannerSettings& s = doc_->planning()->settings();
   seed_->setValue(int(std::min<std::uint64_t>(s.planner.seed, 1'000'000'000)));
   time_limit_->setValue(s.planner.time_limit);
   max_iterations_->setValue(int(std::min<long>(s.planner.max_iterations, 2'000'000'000)));
@@ -188,14 +188,14 @@ void PlannerPanel::loadSettings() {
   step_->setValue(s.planner.step);
   resolution_->setValue(s.planner.resolution);
   shortcut_->setChecked(s.shortcut);
-  shortcut_time_->setValue(s.shortcut_time_s);
+  shortcut_time_->setValue(s.shortcutting.time_limit);
   shortcut_time_->setEnabled(s.shortcut);
   loading_ = false;
 }
 
 void PlannerPanel::storeSettings() {
   if (loading_ || !doc_->hasProject()) return;
-  PlannerSettings s = doc_->plannerSettings();
+  PlannerSettings s = doc_->planning()->settings();
   s.planner.seed = std::uint64_t(seed_->value());
   s.planner.time_limit = time_limit_->value();
   s.planner.max_iterations = max_iterations_->value();
@@ -203,9 +203,9 @@ void PlannerPanel::storeSettings() {
   s.planner.step = step_->value();
   s.planner.resolution = resolution_->value();
   s.shortcut = shortcut_->isChecked();
-  s.shortcut_time_s = shortcut_time_->value();
+  s.shortcutting.time_limit = shortcut_time_->value();
   shortcut_time_->setEnabled(s.shortcut);
-  doc_->setPlannerSettings(s);
+  doc_->planning()->setSettings(s);
 }
 
 void PlannerPanel::setRunning(bool running) {
@@ -218,13 +218,13 @@ void PlannerPanel::setRunning(bool running) {
 }
 
 void PlannerPanel::plan() {
-  if (!doc_->startPlanning()) {
+  if (!doc_->planning()->start()) {
     if (!doc_->issues().empty())
       message_->setText(tr("Cannot plan: %1").arg(QString::fromStdString(doc_->issues().front().message)));
   }
 }
 
-void PlannerPanel::cancel() { doc_->planner()->cancel(); }
+void PlannerPanel::cancel() { doc_->planning()->runner()->cancel(); }
 
 void PlannerPanel::showStates(const std::vector<std::string>& names, const std::vector<size_t>& nodes) {
   states_->setUpdatesEnabled(false);
@@ -249,7 +249,7 @@ void PlannerPanel::showStates(const std::vector<std::string>& names, const std::
 }
 
 void PlannerPanel::onProgress(const PlanSnapshot& s) {
-  const double limit = doc_->plannerSettings().planner.time_limit;
+  const double limit = doc_->planning()->settings().planner.time_limit;
   progress_->setValue(int(std::min(1.0, s.elapsed_s / std::max(1e-9, limit)) * 1000));
   progress_->setFormat(tr("planning… %1 s of at most %2 s").arg(s.elapsed_s, 0, 'f', 1).arg(limit, 0, 'f', 0));
   stats_->setText(tr("%1 s · %L2 iterations · %3 trees · %L4 nodes")
@@ -261,9 +261,9 @@ void PlannerPanel::onProgress(const PlanSnapshot& s) {
 }
 
 void PlannerPanel::onResult() {
-  const PlanResultData* r = doc_->result();
-  setRunning(doc_->planner()->isRunning());
-  if (doc_->planner()->isRunning()) return;
+  const PlanResultData* r = doc_->planning()->result();
+  setRunning(doc_->planning()->runner()->isRunning());
+  if (doc_->planning()->runner()->isRunning()) return;
   if (!r) {
     progress_->setValue(0);
     progress_->setFormat(tr("idle"));

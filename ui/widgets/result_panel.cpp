@@ -115,12 +115,12 @@ ResultPanel::ResultPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
   connect(play_, &QPushButton::clicked, this, &ResultPanel::togglePlay);
   connect(slider_, &QSlider::valueChanged, this, [this](int v) { doc_->setPlaybackT(v / 1000.0); });
   connect(table_, &QTableWidget::cellClicked, this, [this](int row, int) {
-    if (doc_->interpolator()) doc_->setPlaybackT(doc_->interpolator()->waypoint_parameter(size_t(row)));
+    if (doc_->planning()->interpolator()) doc_->setPlaybackT(doc_->planning()->interpolator()->waypoint_parameter(size_t(row)));
   });
   connect(export_, &QPushButton::clicked, this, &ResultPanel::exportRequested);
-  connect(doc_, &Document::resultChanged, this, &ResultPanel::refresh);
+  connect(doc_->planning(), &PlanningController::resultChanged, this, &ResultPanel::refresh);
   connect(doc_, &Document::projectLoaded, this, &ResultPanel::refresh);
-  connect(doc_, &Document::stepsChanged, this, &ResultPanel::refresh);
+  connect(doc_->steps(), &StepStatusModel::changed, this, &ResultPanel::refresh);
   connect(doc_, &Document::displayChanged, this, &ResultPanel::syncSlider);
   refresh();
 }
@@ -132,7 +132,7 @@ void ResultPanel::togglePlay() {
     pause();
     return;
   }
-  if (!doc_->interpolator()) return;
+  if (!doc_->planning()->interpolator()) return;
   if (doc_->playbackT() >= 1.0 || doc_->displayMode() != Document::DisplayMode::Result) doc_->setPlaybackT(0.0);
   last_tick_ms_ = QDateTime::currentMSecsSinceEpoch();
   timer_->start();
@@ -145,7 +145,7 @@ void ResultPanel::pause() {
 }
 
 void ResultPanel::onTick() {
-  const PathInterpolator* interp = doc_->interpolator();
+  const PathInterpolator* interp = doc_->planning()->interpolator();
   if (!interp || doc_->displayMode() != Document::DisplayMode::Result) {
     pause();
     return;
@@ -165,7 +165,7 @@ void ResultPanel::syncSlider() {
     QSignalBlocker b(slider_);
     slider_->setValue(result_mode ? int(std::lround(doc_->playbackT() * 1000)) : 0);
   }
-  const PathInterpolator* interp = doc_->interpolator();
+  const PathInterpolator* interp = doc_->planning()->interpolator();
   if (interp) {
     const double duration = std::max(1.0, interp->length() / kNominalRate);
     time_->setText(QStringLiteral("%1 / %2 s").arg(doc_->playbackT() * duration, 0, 'f', 1).arg(duration, 0, 'f', 1));
@@ -186,14 +186,14 @@ void ResultPanel::syncSlider() {
 }
 
 void ResultPanel::refresh() {
-  const PlanResultData* r = doc_->result();
-  const bool has_path = r && r->path && doc_->interpolator();
+  const PlanResultData* r = doc_->planning()->result();
+  const bool has_path = r && r->path && doc_->planning()->interpolator();
   play_->setEnabled(has_path);
   slider_->setEnabled(has_path);
   speed_->setEnabled(has_path);
   export_->setEnabled(has_path && r->summary.valid);
   if (!r) {
-    verdict_->setText(doc_->planner()->isRunning() ? tr("Planning…") : tr("No result yet: press Plan (F5) in the Planner panel."));
+    verdict_->setText(doc_->planning()->runner()->isRunning() ? tr("Planning…") : tr("No result yet: press Plan (F5) in the Planner panel."));
     metrics_->clear();
     table_->setRowCount(0);
     pause();
@@ -212,7 +212,7 @@ void ResultPanel::refresh() {
   else
     verdict = tr("<span style='color:%1'><b>&#9888; The validator rejects the path:</b></span> %2")
                   .arg(kErrorColor.name(), QString::fromStdString(s.message).toHtmlEscaped());
-  if (doc_->resultStale())
+  if (doc_->planning()->resultStale())
     verdict += tr("<br><span style='color:%1'>The demonstration changed since: plan again.</span>").arg(kWarningColor.name());
   verdict_->setText(verdict);
   if (s.solved) {
@@ -250,7 +250,7 @@ void ResultPanel::refresh() {
     if (w.object >= 0 && w.object < int(path.object_ids.size()))
       state += QStringLiteral(" · %1").arg(QString::fromStdString(path.object_ids[w.object]));
     const QStringList cells = {QString::number(k), actions[k], state,
-                               QStringLiteral("%1%").arg(doc_->interpolator()->waypoint_parameter(size_t(k)) * 100, 0, 'f', 0)};
+                               QStringLiteral("%1%").arg(doc_->planning()->interpolator()->waypoint_parameter(size_t(k)) * 100, 0, 'f', 0)};
     for (int c = 0; c < 4; ++c) {
       auto* item = table_->item(k, c);
       if (!item) table_->setItem(k, c, item = new QTableWidgetItem);

@@ -6,6 +6,7 @@
 
 #include "core/demo/demonstration.h"
 #include "core/geometry/se3.h"
+#include "ui/document/step_status.h"  // kLowConfidence
 
 namespace demoplan::ui {
 
@@ -17,7 +18,6 @@ inline const QColor kWarningColor{0xd9, 0x8e, 0x04};
 inline const QColor kErrorColor{0xcf, 0x22, 0x2e};
 inline const QColor kBusyColor{0x1f, 0x6f, 0xeb};
 inline const QColor kSelectionColor{0xff, 0xc4, 0x00};
-inline constexpr double kLowConfidence = 0.5;
 
 // "grasp" / "release"
 QString eventTypeName(EventType type);

@@ -27,7 +27,7 @@ TimelineWidget::TimelineWidget(Document* doc, QWidget* parent) : QWidget(parent)
   connect(doc_, &Document::demonstrationChanged, this, repaint);
   connect(doc_, &Document::selectionChanged, this, repaint);
   connect(doc_, &Document::currentFrameChanged, this, repaint);
-  connect(doc_, &Document::videoChanged, this, repaint);
+  connect(doc_->media(), &Media::videoChanged, this, repaint);
   connect(doc_, &Document::projectLoaded, this, [this] {
     updateGeometry();
     update();
@@ -357,9 +357,9 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
   bar->addWidget(cancel_);
   bar->addWidget(detection_, 1);
   layout->addLayout(bar);
-  connect(detect_, &QPushButton::clicked, this, [this] { doc_->startExtraction(); });
-  connect(cancel_, &QPushButton::clicked, this, [this] { doc_->extractor()->cancel(); });
-  ExtractionRunner* ex = doc_->extractor();
+  connect(detect_, &QPushButton::clicked, this, [this] { doc_->detection()->start(); });
+  connect(cancel_, &QPushButton::clicked, this, [this] { doc_->detection()->runner()->cancel(); });
+  ExtractionRunner* ex = doc_->detection()->runner();
   connect(ex, &ExtractionRunner::started, this, [this] {
     progress_->setValue(0);
     detection_->setText(tr("Detecting…"));
@@ -374,7 +374,7 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
     detection_->setText(tr("Detection cancelled: the events are unchanged."));
     refreshDetection();
   });
-  connect(doc_, &Document::extractionDone, this, [this](const ExtractionOutcome& o) {
+  connect(doc_->detection(), &EventDetection::done, this, [this](const ExtractionOutcome& o) {
     if (o.ok) {
       int low = 0;
       for (const auto& e : o.demonstration.events) low += e.confidence < kLowConfidence;
@@ -392,7 +392,7 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
     }
     refreshDetection();
   });
-  connect(doc_, &Document::stepsChanged, this, &TimelinePanel::refreshDetection);
+  connect(doc_->steps(), &StepStatusModel::changed, this, &TimelinePanel::refreshDetection);
   connect(doc_, &Document::projectLoaded, this, [this] {
     detection_->clear();
     refreshDetection();
@@ -422,8 +422,8 @@ void TimelinePanel::jumpToIssue(int index) {
 }
 
 void TimelinePanel::refreshDetection() {
-  const bool running = doc_->extractor()->isRunning();
-  const QString blocker = doc_->extractionBlocker();
+  const bool running = doc_->detection()->runner()->isRunning();
+  const QString blocker = doc_->detection()->blocker();
   detect_->setEnabled(!running && blocker.isEmpty());
   detect_->setToolTip(blocker.isEmpty() || running ? tr("Find the grasps and releases and the parts' poses in the video "
                                                         "(markers on the parts, hand near a part). Replaces the events; "

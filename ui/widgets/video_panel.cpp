@@ -32,7 +32,7 @@ FrameView::FrameView(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc
   setMinimumSize(240, 135);
   setAttribute(Qt::WA_OpaquePaintEvent);
   connect(doc_, &Document::currentFrameChanged, this, &FrameView::reloadFrame);
-  connect(doc_, &Document::videoChanged, this, [this] {
+  connect(doc_->media(), &Media::videoChanged, this, [this] {
     image_frame_ = -1;
     reloadFrame();
   });
@@ -41,7 +41,7 @@ FrameView::FrameView(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc
     image_frame_ = -1;
     reloadFrame();
   });
-  connect(doc_, &Document::cameraChanged, this, [this] {
+  connect(doc_->media(), &Media::cameraChanged, this, [this] {
     detector_.reset();
     computeOverlay();
     update();
@@ -96,7 +96,7 @@ void FrameView::rebuildModels() {
 
 void FrameView::reloadFrame() {
   error_.clear();
-  perception::VideoReader* video = doc_->video();
+  perception::VideoReader* video = doc_->media()->video();
   const int frame = doc_->currentFrame();
   if (!video) {
     image_ = QImage();
@@ -109,7 +109,7 @@ void FrameView::reloadFrame() {
       markers_.clear();
       if (show_markers_) {
         if (!detector_) {
-          const perception::Camera* cam = doc_->camera();
+          const perception::Camera* cam = doc_->media()->camera();
           detector_ = std::make_unique<perception::MarkerDetector>(cam && cam->board ? cam->board->dictionary
                                                                                      : std::string("DICT_4X4_100"));
         }
@@ -131,7 +131,7 @@ void FrameView::reloadFrame() {
 
 void FrameView::computeOverlay() {
   outlines_.assign(model_points_.size(), QPolygonF());
-  const perception::Camera* cam = doc_->camera();
+  const perception::Camera* cam = doc_->media()->camera();
   if (!doc_->hasProject() || !cam || !cam->world_T_camera || !show_outlines_) return;
   const Pose camera_T_world = cam->world_T_camera->inverse();
   const int frame = doc_->currentFrame();
@@ -166,8 +166,8 @@ void FrameView::paintEvent(QPaintEvent*) {
   p.fillRect(rect(), QColor(0x20, 0x22, 0x25));
   p.setRenderHint(QPainter::Antialiasing);
   if (!doc_->hasProject()) return;
-  QSizeF size = image_.isNull() ? QSizeF(doc_->camera() ? doc_->camera()->image_size.width : 1280,
-                                         doc_->camera() ? doc_->camera()->image_size.height : 720)
+  QSizeF size = image_.isNull() ? QSizeF(doc_->media()->camera() ? doc_->media()->camera()->image_size.width : 1280,
+                                         doc_->media()->camera() ? doc_->media()->camera()->image_size.height : 720)
                                 : QSizeF(image_.size());
   const double s = std::min(width() / size.width(), height() / size.height());
   const QRectF target((width() - size.width() * s) / 2, (height() - size.height() * s) / 2, size.width() * s,
@@ -178,7 +178,7 @@ void FrameView::paintEvent(QPaintEvent*) {
   } else {
     p.setPen(QColor(0xc8, 0xcc, 0xd0));
     const QString text = !error_.isEmpty()             ? error_
-                         : !doc_->videoError().isEmpty() ? doc_->videoError()
+                         : !doc_->media()->videoError().isEmpty() ? doc_->media()->videoError()
                                                          : tr("No video.\nFile > Open Video… or drop a recording here.");
     p.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignCenter | Qt::TextWordWrap, text);
   }
@@ -242,7 +242,7 @@ void FrameView::paintEvent(QPaintEvent*) {
     p.setPen(Qt::white);
     p.drawText(box, Qt::AlignCenter, text);
   }
-  const perception::Camera* cam = doc_->camera();
+  const perception::Camera* cam = doc_->media()->camera();
   if (!image_.isNull() && (!cam || !cam->world_T_camera)) {
     p.setPen(QColor(0xff, 0xd0, 0x60));
     p.drawText(target.adjusted(8, 0, -8, -6), Qt::AlignBottom | Qt::AlignLeft,
@@ -298,7 +298,7 @@ VideoPanel::VideoPanel(Document* doc, Transport* transport, QWidget* parent)
     doc_->setCurrentFrame(v);
   });
   connect(doc_, &Document::currentFrameChanged, this, &VideoPanel::refresh);
-  connect(doc_, &Document::videoChanged, this, &VideoPanel::refresh);
+  connect(doc_->media(), &Media::videoChanged, this, &VideoPanel::refresh);
   connect(doc_, &Document::projectLoaded, this, &VideoPanel::refresh);
   connect(transport_, &Transport::stateChanged, this, [this](bool playing, double) {
     play_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
@@ -332,7 +332,7 @@ void VideoPanel::dragEnterEvent(QDragEnterEvent* e) {
 void VideoPanel::dropEvent(QDropEvent* e) {
   for (const QUrl& u : e->mimeData()->urls())
     if (u.isLocalFile() && isVideoFile(u.toLocalFile()) && doc_->hasProject()) {
-      doc_->setVideo(u.toLocalFile());
+      doc_->media()->setVideo(u.toLocalFile());
       e->acceptProposedAction();
       return;
     }

@@ -6,7 +6,7 @@
 // interpolator interpolates it and says so.
 #include <vector>
 
-#include "core/planning/path.h"
+#include "core/path/path.h"
 #include "core/scene/scene.h"
 
 namespace demoplan {

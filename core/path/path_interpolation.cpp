@@ -1,4 +1,4 @@
-#include "core/planning/path_interpolation.h"
+#include "core/path/path_interpolation.h"
 
 #include <algorithm>
 #include <cmath>

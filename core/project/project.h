@@ -9,8 +9,7 @@
 //  "markers": "markers.json",                  // demoplan-marker-scene: which markers are on which
 //                                              // part (to detect the events in the video); "" none
 //  "demonstration": {"format": "demoplan-demonstration", "version": 1, ...},  // with the edits
-//  "planner": {"seed": 1, "time_limit_s": 60, "max_iterations": 10000000, "eta": 0.1,
-//              "step_rad": 0.3, "resolution_rad": 0.01, "shortcut": true, "shortcut_time_s": 1},
+//  "planner": {...},                           // core/planning/planner_settings.h
 //  "result": {"path": "x.path.json", ...summary of the last run} | null,
 //  "view": {"frame": 0}}
 // Paths are stored relative to the project file's folder (absolute paths are kept as they are)
@@ -20,9 +19,10 @@
 
 #include "core/demo/demonstration.h"
 #include "core/io/json_file.h"
-#include "core/planning/solve.h"
+#include "core/planning/plan_job.h"
+#include "core/planning/planner_settings.h"
 
-namespace demoplan::ui {
+namespace demoplan {
 
 inline constexpr const char* kProjectFormat = "demoplan-project";
 inline constexpr int kProjectVersion = 1;
@@ -34,13 +34,6 @@ struct SceneReference {
   std::string robot = "panda";
   int pose = 0;
   bool operator==(const SceneReference&) const = default;
-};
-
-struct PlannerSettings {
-  PlannerParams planner;
-  bool shortcut = true;
-  double shortcut_time_s = 1.0;
-  SolveParams solve_params() const;
 };
 
 // What the last planning run produced, as the result panel shows it. The path itself lives in
@@ -62,6 +55,10 @@ struct ResultSummary {
   bool shortened = false;
   std::string demonstration_digest;  // of the demonstration it was planned for
 };
+
+// The summary of a plan job's report, as the project file stores it (the path file and the
+// demonstration digest are the caller's).
+ResultSummary summarize(const PlanReport& report, const std::string& validated_against);
 
 struct Project {
   SceneReference scene;
@@ -86,4 +83,4 @@ Project project_from_json(const Json& json, const std::string& file);
 // out of date.
 std::string demonstration_digest(const Demonstration& demo);
 
-}  // namespace demoplan::ui
+}  // namespace demoplan

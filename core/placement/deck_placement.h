@@ -7,11 +7,16 @@
 // its next placement. The chooser moves each deck pose (position on the deck polygon and yaw
 // about its normal, keeping the resting face) until the picks that use it can be done, and
 // keeps the demonstrated pose when they can already.
+//
+// An explicit stage between loading a demonstration and planning it (the CLI and the GUI call
+// it; it takes seconds on waiter_0): demonstration in, adjusted demonstration and a report out.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "core/demo/demonstration.h"
+#include "core/planning/stop_condition.h"
 #include "core/scene/scene.h"
 
 namespace demoplan {
@@ -55,13 +60,22 @@ struct DeckRest {
 struct DeckPlacementReport {
   std::vector<DeckRest> rests;
   double seconds = 0.0;
+  bool stopped = false;  // cancelled or out of time: nothing was chosen
   bool changed() const;
   bool feasible() const;
   std::vector<std::string> notes() const;  // one per rest; says what moved and why
 };
 
+struct DeckPlacement {
+  Demonstration demonstration;  // the input with the chosen deck poses (unchanged when stopped)
+  DeckPlacementReport report;
+};
+
+// (rests done + fraction of the current one, rests)
+using DeckPlacementProgress = std::function<void(double done, int total)>;
+
 // Chooses the pose of every object resting on a robot surface in `demo` (events whose
-// pose_frames name a robot link) and writes it into those events. For each rest, in the order
+// pose_frames name a robot link) and writes it into those events of the returned demonstration. For each rest, in the order
 // the objects are put on the deck, the candidates are the demonstrated pose, then the same
 // face resting on a grid of positions and yaws ordered by how far they are from it; a
 // candidate must pass the benchmark's placement test on the surface, be collision-free against
@@ -71,6 +85,7 @@ struct DeckPlacementReport {
 // handle grasps it there, each with a handle that also grasps it at its previous placement or
 // releases it at its next one. The picks of objects already chosen that happen while it rides
 // are sampled again. Deterministic for a seed. Does nothing (and costs nothing) without rests.
-DeckPlacementReport choose_deck_poses(const Scene& scene, Demonstration& demo, const DeckPlacementOptions& options = {});
+DeckPlacement place_on_deck(const Scene& scene, const Demonstration& demo, const DeckPlacementOptions& options = {},
+                            const StopCondition& stop = {}, const DeckPlacementProgress& progress = {});
 
 }  // namespace demoplan

@@ -1,4 +1,4 @@
-#include "core/demo/deck_placement.h"
+#include "core/placement/deck_placement.h"
 
 #include <algorithm>
 #include <chrono>
@@ -70,8 +70,9 @@ struct Candidate {
 
 class Chooser {
 public:
-  Chooser(const Scene& scene, Demonstration& demo, const DeckPlacementOptions& o)
-      : scene_(scene), demo_(demo), o_(o), graph_(build_constraint_graph(scene, demo)),
+  Chooser(const Scene& scene, Demonstration& demo, const DeckPlacementOptions& o, const StopCondition& stop,
+          const DeckPlacementProgress& progress)
+      : scene_(scene), demo_(demo), o_(o), stop_(stop), progress_(progress), graph_(build_constraint_graph(scene, demo)),
         projector_(scene, graph_), checker_(scene), validity_(scene, graph_, checker_), data_(checker_.make_data()),
         identity_links_(scene.robot.model.links.size(), Pose::Identity()) {
     for (size_t f = 0; f < scene.furniture.size(); ++f)
@@ -91,7 +92,18 @@ public:
     for (size_t r = 0; r < order.size(); ++r) order[r] = r;
     std::stable_sort(order.begin(), order.end(),
                      [&](size_t a, size_t b) { return rests_[a].position_on < rests_[b].position_on; });
-    for (size_t r : order) choose(r);
+    for (size_t i = 0; i < order.size() && !stopped_; ++i) {
+      if (stop_.should_stop()) {
+        stopped_ = true;
+        break;
+      }
+      done_rests_ = static_cast<int>(i);
+      choose(order[i]);
+    }
+    if (stopped_) {
+      report.stopped = true;
+      return report;
+    }
     for (const auto& r : rests_) {
       for (int e = r.out.first_event; e <= r.out.last_event; ++e) demo_.events[e].poses[r.out.object] = r.out.chosen;
       report.rests.push_back(r.out);
@@ -366,6 +378,13 @@ private:
     bool accepted = false;
     const std::vector<Candidate> cands = candidates(r);
     for (size_t ci = 0; ci < cands.size() && out.candidates_rated < o_.max_rated && !accepted; ++ci) {
+      if (stop_.should_stop()) {
+        stopped_ = true;
+        return;
+      }
+      if (progress_)
+        progress_(static_cast<double>(done_rests_) + static_cast<double>(out.candidates_rated) / o_.max_rated,
+                  static_cast<int>(rests_.size()));
       const Candidate& cand = cands[ci];
       auto reject = [&](const std::string& why) {
         if (ci == 0) demo_problem = why;
@@ -464,6 +483,10 @@ private:
   const Scene& scene_;
   Demonstration& demo_;
   DeckPlacementOptions o_;
+  const StopCondition& stop_;
+  const DeckPlacementProgress& progress_;
+  bool stopped_ = false;
+  int done_rests_ = 0;
   ConstraintGraph graph_;
   ConstraintProjector projector_;
   CollisionChecker checker_;
@@ -477,16 +500,19 @@ private:
 
 }  // namespace
 
-DeckPlacementReport choose_deck_poses(const Scene& scene, Demonstration& demo, const DeckPlacementOptions& options) {
+DeckPlacement place_on_deck(const Scene& scene, const Demonstration& demo, const DeckPlacementOptions& options,
+                            const StopCondition& stop, const DeckPlacementProgress& progress) {
+  DeckPlacement out{demo, {}};
   bool any = false;
   for (const auto& e : demo.events)
     for (const auto& f : e.pose_frames) any |= !f.empty();
-  if (!any) return {};
+  if (!any) return out;
   const auto t0 = std::chrono::steady_clock::now();
-  Chooser chooser(scene, demo, options);
-  DeckPlacementReport report = chooser.run();
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return report;
+  Chooser chooser(scene, out.demonstration, options, stop, progress);
+  out.report = chooser.run();
+  out.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (out.report.stopped) out.demonstration = demo;
+  return out;
 }
 
 }  // namespace demoplan

@@ -1,4 +1,4 @@
-#include "core/planning/path.h"
+#include "core/path/path.h"
 
 #include "core/error.h"
 #include "core/io/json_file.h"
@@ -56,10 +56,7 @@ void save_path(const std::string& file, const Path& path) {
 Path load_path(const std::string& file) {
   const Json json = read_json_file(file);
   const JsonField root(json, file);
-  if (root["format"].string() != kFormat) root["format"].fail(std::string("expected ") + kFormat);
-  if (root["version"].integer() != kVersion)
-    root["version"].fail("unsupported version " + std::to_string(root["version"].integer()) +
-                         " (this demoplan reads version " + std::to_string(kVersion) + ")");
+  check_format(root, kFormat, kVersion);
   Path p;
   p.task = root["task"].string();
   p.robot = root["robot"].string();

@@ -1,11 +1,11 @@
-#include "ui/project/project.h"
+#include "core/project/project.h"
 
 #include <cstdio>
 #include <filesystem>
 
 #include "core/error.h"
 
-namespace demoplan::ui {
+namespace demoplan {
 
 namespace fs = std::filesystem;
 
@@ -70,59 +70,30 @@ ResultSummary result_from_json(const JsonField& j, const std::string& file) {
   return r;
 }
 
-Json planner_to_json(const PlannerSettings& s) {
-  const PlannerParams& p = s.planner;
-  return Json{{"seed", p.seed},
-              {"time_limit_s", p.time_limit},
-              {"max_iterations", p.max_iterations},
-              {"eta", p.eta_sample_tree},
-              {"step_rad", p.step},
-              {"resolution_rad", p.resolution},
-              {"shortcut", s.shortcut},
-              {"shortcut_time_s", s.shortcut_time_s}};
-}
-
-PlannerSettings planner_from_json(const JsonField& j) {
-  PlannerSettings s;
-  PlannerParams& p = s.planner;
-  if (j.has("seed")) {
-    if (!j["seed"].value().is_number_unsigned()) j["seed"].fail("must be a non-negative integer");
-    p.seed = j["seed"].value().get<std::uint64_t>();
-  }
-  auto positive = [&](const char* key, double& out) {
-    if (!j.has(key)) return;
-    out = j[key].number();
-    if (out <= 0) j[key].fail("must be > 0");
-  };
-  positive("time_limit_s", p.time_limit);
-  positive("step_rad", p.step);
-  positive("resolution_rad", p.resolution);
-  if (j.has("max_iterations")) {
-    const double v = j["max_iterations"].number();
-    if (v < 1) j["max_iterations"].fail("must be >= 1");
-    p.max_iterations = static_cast<long>(v);
-  }
-  if (j.has("eta")) {
-    p.eta_sample_tree = j["eta"].number();
-    if (p.eta_sample_tree < 0 || p.eta_sample_tree > 1) j["eta"].fail("must be within [0, 1]");
-  }
-  if (j.has("shortcut")) s.shortcut = j["shortcut"].boolean();
-  if (j.has("shortcut_time_s")) {
-    s.shortcut_time_s = j["shortcut_time_s"].number();
-    if (s.shortcut_time_s < 0) j["shortcut_time_s"].fail("must be >= 0");
-  }
-  return s;
-}
-
 }  // namespace
 
-SolveParams PlannerSettings::solve_params() const {
-  SolveParams sp;
-  sp.planner = planner;
-  sp.shortcut = shortcut && shortcut_time_s > 0;
-  sp.shortcutting.time_limit = shortcut_time_s;
-  sp.shortcutting.seed = planner.seed;
-  return sp;
+ResultSummary summarize(const PlanReport& report, const std::string& validated_against) {
+  ResultSummary s;
+  const PlanResult& p = report.plan;
+  s.solved = p.solved;
+  s.planning_time_s = p.planning_time_s;
+  s.iterations = p.iterations;
+  s.trees = p.trees;
+  s.nodes = p.nodes;
+  if (!p.solved) {
+    s.message = p.message;
+    return s;
+  }
+  const ValidationReport& v = report.validation;
+  s.valid = v.valid;
+  s.message = v.message;
+  s.validated_against = validated_against;
+  s.length_robot_rad = v.length.robot;
+  s.length_object_m = v.length.object_translation;
+  s.length_object_rad = v.length.object_rotation;
+  s.grasps = v.grasps;
+  s.shortened = report.shortened;
+  return s;
 }
 
 Json project_to_json(const Project& p, const std::string& file) {
@@ -136,7 +107,7 @@ Json project_to_json(const Project& p, const std::string& file) {
          {"camera", to_stored(p.camera, file)},
          {"markers", to_stored(p.markers, file)},
          {"demonstration", demonstration_to_json(p.demonstration)},
-         {"planner", planner_to_json(p.planner)},
+         {"planner", planner_settings_to_json(p.planner)},
          {"result", p.result ? result_to_json(*p.result, file) : Json(nullptr)},
          {"view", {{"frame", p.frame}}}};
   return j;
@@ -144,13 +115,7 @@ Json project_to_json(const Project& p, const std::string& file) {
 
 Project project_from_json(const Json& json, const std::string& file) {
   const JsonField root(json, file);
-  if (!json.is_object()) root.fail("not a demoplan project (expected a JSON object)");
-  if (!root.has("format") || !json["format"].is_string() || json["format"] != kProjectFormat)
-    root.fail(std::string("not a demoplan project: \"format\" must be \"") + kProjectFormat + "\"");
-  const int version = root["version"].integer();
-  if (version != kProjectVersion)
-    root["version"].fail("unsupported project version " + std::to_string(version) + " (this demoplan reads version " +
-                         std::to_string(kProjectVersion) + "; a newer demoplan may open it)");
+  check_format(root, kProjectFormat, kProjectVersion, "project");
   Project p;
   const JsonField scene = root["scene"];
   p.scene.task = scene["task"].string();
@@ -164,7 +129,7 @@ Project project_from_json(const Json& json, const std::string& file) {
   const JsonField demo = root["demonstration"];
   if (!demo.value().is_object()) demo.fail("must be a demoplan-demonstration object");
   p.demonstration = demonstration_from_json(demo.value(), file + ": demonstration");
-  if (root.has("planner")) p.planner = planner_from_json(root["planner"]);
+  if (root.has("planner")) p.planner = planner_settings_from_json(root["planner"]);
   if (root.has("result") && !root["result"].is_null()) p.result = result_from_json(root["result"], file);
   if (root.has("view") && root["view"].has("frame")) p.frame = std::max(0, root["view"]["frame"].integer());
   return p;
@@ -193,4 +158,4 @@ std::string demonstration_digest(const Demonstration& demo) {
   return buf;
 }
 
-}  // namespace demoplan::ui
+}  // namespace demoplan

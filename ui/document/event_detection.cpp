@@ -1,0 +1,47 @@
+#include "ui/document/event_detection.h"
+
+#include "ui/document/document.h"
+
+namespace demoplan::ui {
+
+EventDetection::EventDetection(Document* doc) : QObject(doc), doc_(doc), runner_(this) {
+  connect(&runner_, &ExtractionRunner::finished, this, &EventDetection::onFinished);
+}
+
+QString EventDetection::blocker() const {
+  if (!doc_->hasProject()) return tr("Open a project first");
+  if (runner_.isRunning()) return tr("Detection is running");
+  const Media& m = *doc_->media();
+  if (!m.video()) return tr("Open the video first (File > Open Video…)");
+  if (!m.camera()) return tr("Open the camera calibration first (File > Open Camera Calibration…)");
+  if (m.markersFile().empty())
+    return tr("Open the marker scene first (File > Open Marker Scene…): which markers are on which part");
+  return {};
+}
+
+bool EventDetection::start() {
+  if (!blocker().isEmpty()) return false;
+  ExtractionJob job;
+  job.video = doc_->media()->videoFile();
+  job.camera = doc_->media()->cameraFile();
+  job.markers = doc_->media()->markersFile();
+  for (const auto& o : doc_->scene().objects) job.object_ids.push_back(o.id);
+  job.task = doc_->sceneReference().task;
+  return runner_.start(std::move(job));
+}
+
+void EventDetection::onFinished(const ExtractionOutcome& o) {
+  if (o.ok && o.demonstration.events.empty()) {
+    ExtractionOutcome none = o;
+    none.ok = false;
+    none.error = "no grasp or release was found in the video";
+    emit done(none);
+    return;
+  }
+  if (o.ok)
+    doc_->replaceDemonstration(o.demonstration,
+                               tr("Detect events in the video (%1 events)").arg(o.demonstration.events.size()));
+  emit done(o);
+}
+
+}  // namespace demoplan::ui

@@ -1,0 +1,36 @@
+#pragma once
+// The Events step's automatic part: detecting the grasps and releases in the project's video
+// (ExtractionRunner on a background thread). A result replaces the demonstration as one
+// undoable edit.
+#include <QObject>
+#include <QString>
+
+#include "ui/document/extraction_runner.h"
+
+namespace demoplan::ui {
+
+class Document;
+
+class EventDetection : public QObject {
+  Q_OBJECT
+public:
+  explicit EventDetection(Document* doc);
+
+  ExtractionRunner* runner() { return &runner_; }
+  bool isRunning() const { return runner_.isRunning(); }
+  // What is missing to detect events; empty when start() can run.
+  QString blocker() const;
+  bool start();
+
+signals:
+  // After the demonstration was replaced (ok) or nothing was (not ok: the error says why).
+  void done(const ExtractionOutcome& outcome);
+
+private:
+  void onFinished(const ExtractionOutcome& outcome);
+
+  Document* doc_;
+  ExtractionRunner runner_;
+};
+
+}  // namespace demoplan::ui
