@@ -135,6 +135,25 @@ private slots:
     QVERIFY2(QDir(work.path()).entryList(entries).isEmpty(), qPrintable(QDir(work.path()).entryList(entries).join(' ')));
   }
 
+  // What the preview shows is what Save writes, byte for byte (KRL: the .src and the .dat).
+  void savesWhatThePreviewShows() {
+    Document doc(test::dataDir().toStdString());
+    doc.open(project_);
+    ExportDialog dialog(&doc, false);
+    dialog.formatBox()->setCurrentIndex(dialog.formatBox()->findData(QStringLiteral("krl")));
+    QVERIFY2(dialog.last().ok, dialog.last().error.c_str());
+    const std::vector<ProgramFile> shown = dialog.last().files;
+    QCOMPARE(shown.size(), size_t(2));
+    QCOMPARE(shown.front().name, std::string("SWING.src"));  // the project's name, as KRL wants it
+    QTemporaryDir out;
+    QVERIFY(dialog.saveTo(out.filePath(QStringLiteral("SWING.src"))));
+    for (const ProgramFile& f : shown) {
+      QFile saved(out.filePath(QString::fromStdString(f.name)));
+      QVERIFY2(saved.open(QIODevice::ReadOnly), f.name.c_str());
+      QCOMPARE(saved.readAll().toStdString(), f.text);
+    }
+  }
+
   void refusesAFormatThatDoesNotFitTheRobot() {
     Document doc(test::dataDir().toStdString());
     doc.open(project_);
