@@ -1,5 +1,5 @@
-// demoplan-cli export: time-parameterize a planned path within the robot's limits, check the
-// result independently, and write it as a program for the robot's controller.
+// demoplan-cli export: the export job (time the path within the robot's limits, check it
+// independently, write the program) on a path file, then the program's files to disk.
 #include <iostream>
 #include <memory>
 
@@ -8,11 +8,8 @@
 #include "app/cli/command.h"
 #include "core/demo/benchmark_scene.h"
 #include "core/error.h"
-#include "core/export/exporter.h"
-#include "core/model/srdf.h"
-#include "core/trajectory/time_parameterization.h"
-#include "core/trajectory/trajectory_checker.h"
-#include "core/validation/trajectory_collisions.h"
+#include "core/export/export_job.h"
+#include "core/export/program_writers.h"
 
 namespace demoplan::cli {
 
@@ -31,85 +28,82 @@ int run_export(const ExportCommandOptions& o) {
   const std::string robot = o.robot.empty() ? path.robot : o.robot;
   if (robot != path.robot)
     throw InputError(o.path_file, "robot", "the path is for '" + path.robot + "', --robot says '" + robot + "'");
-  const BenchmarkRobot info = load_benchmark_robot(o.data_dir, robot);
-  const RobotModel model = load_urdf(info.urdf);
-  const Srdf srdf = load_srdf(info.srdf);
-  if (srdf.grippers.empty()) throw InputError(info.srdf, "gripper", "robot has no gripper");
-
-  LimitOverrides overrides;
-  overrides.velocity_scale = o.velocity_scale;
-  overrides.acceleration_scale = o.acceleration_scale;
-  const JointLimitSet limits = trajectory_limits(model, overrides);
-  TimingOptions timing;
-  timing.source = o.path_file;
-  timing.blend_length = o.blend;
-  // The blends cut the path's corners: check them against the path's scene, and rest at the
-  // corners where they would touch something.
+  // The blends cut the path's corners and are checked against the path's scene.
   if (path.task.empty()) throw InputError(o.path_file, "task", "is empty: the scene is needed to check the blends");
   const Scene scene = build_benchmark_scene(load_benchmark_task(o.data_dir, path.task), robot, path.robot_pose);
-  const CollisionChecker checker(scene);
-  const ClearTrajectory clear = time_parameterize_clear(scene, checker, path, limits, timing);
-  const Trajectory& tr = clear.trajectory;
 
-  // The independent check, at the output's own rate where it streams samples.
-  const double rate = o.format == "franka" ? 1000.0 : o.rate > 0 ? o.rate : o.servoj ? 125.0 : 100.0;
-  const auto samples = tr.sample(rate, true);
-  const CheckReport check = check_trajectory(samples, path, limits);
+  ExportSettings settings;
+  settings.format = o.format;
+  settings.velocity_scale = o.velocity_scale;
+  settings.acceleration_scale = o.acceleration_scale;
+  settings.blend = o.blend;
+  settings.rate = o.rate;
+  settings.gripper_output = o.gripper_output;
+  settings.gripper_open_output = o.gripper_open_output;
+  settings.servoj = o.servoj;
+  settings.krl_ptp = o.krl_ptp;
+  settings.base_joints = benchmark_base_joints(o.data_dir, robot);
+  settings.source = o.path_file;
+  settings.file = o.out;
+  const ExportReport r = run_export_job(scene, path, settings);
+  if (r.check_ok) write_program_files(r.files);
 
-  const RobotAxes axes = robot_axes(model, srdf.grippers.front().link, benchmark_base_joints(o.data_dir, robot));
-  ExportOptions eo;
-  eo.robot = robot;
-  eo.source = o.path_file;
-  eo.rate = o.rate;
-  eo.close_output = o.gripper_output;
-  eo.open_output = o.gripper_open_output;
-  eo.servoj = o.servoj;
-  eo.krl_ptp = o.krl_ptp;
-  ExportResult written;
-  if (check.ok) written = export_program(o.format, {path, tr, limits, model, axes, eo}, o.out);
-
-  int stops = 0;
-  for (char s : tr.stops) stops += s;
+  std::vector<std::string> files;
+  for (const ProgramFile& f : r.files) files.push_back(f.name);
   std::cerr << "export " << o.format << " for " << robot << " from " << o.path_file << "\n"
-            << "  waypoints            " << path.waypoints.size() << " (" << stops << " rests)\n"
-            << "  duration             " << tr.duration << " s\n"
-            << "  trapezoid duration   " << tr.trapezoid_duration << " s (ratio " << tr.trapezoid_duration / tr.duration << ")\n"
-            << "  peak velocity        " << check.peak_velocity_ratio << " of the limit\n"
-            << "  peak acceleration    " << check.peak_acceleration_ratio << " of the limit\n"
-            << "  samples checked      " << samples.size() << " at " << rate << " Hz: "
-            << (check.ok ? "ok" : "FAILED: " + check.violations.front()) << "\n"
-            << "  blends               " << tr.blends.size() << " collision-free"
-            << (clear.rests_added.empty() ? std::string()
-                                          : "; " + std::to_string(clear.rests_added.size()) +
-                                                " more rest(s) where a blend would touch the scene")
+            << "  waypoints            " << r.waypoints << " (" << r.rests << " rests)\n"
+            << "  duration             " << r.duration_s << " s\n"
+            << "  trapezoid duration   " << r.trapezoid_duration_s << " s (ratio " << r.trapezoid_ratio << ")\n"
+            << "  peak velocity        " << r.peak_velocity_ratio << " of the limit\n"
+            << "  peak acceleration    " << r.peak_acceleration_ratio << " of the limit\n"
+            << "  samples checked      " << r.samples_checked << " at " << r.rate_hz << " Hz: "
+            << (r.check_ok ? "ok" : "FAILED: " + r.violations.front()) << "\n"
+            << "  blends               " << r.blends << " collision-free"
+            << (r.rests_added == 0 ? std::string()
+                                   : "; " + std::to_string(r.rests_added) + " more rest(s) where a blend would touch the scene")
             << "\n";
-  for (const auto& f : written.files) std::cerr << "  wrote                " << f << "\n";
-  for (const auto& w : written.warnings) std::cerr << "  warning              " << w << "\n";
+  for (const auto& f : files) std::cerr << "  wrote                " << f << "\n";
+  for (const auto& w : r.warnings) std::cerr << "  warning              " << w << "\n";
   if (o.json) {
     nlohmann::json j{{"format", o.format},
                      {"robot", robot},
                      {"path", o.path_file},
-                     {"waypoints", path.waypoints.size()},
-                     {"rests", stops},
-                     {"duration_s", tr.duration},
-                     {"trapezoid_duration_s", tr.trapezoid_duration},
-                     {"trapezoid_ratio", tr.trapezoid_duration / tr.duration},
-                     {"samples", samples.size()},
-                     {"rate_hz", rate},
-                     {"streamed_samples", written.samples},
-                     {"peak_velocity_ratio", check.peak_velocity_ratio},
-                     {"peak_acceleration_ratio", check.peak_acceleration_ratio},
-                     {"peak_jerk_ratio", check.peak_jerk_ratio},
-                     {"max_path_deviation", check.max_path_deviation},
-                     {"check_ok", check.ok},
-                     {"blends", tr.blends.size()},
-                     {"rests_added_for_clearance", clear.rests_added.size()},
-                     {"violations", check.violations},
-                     {"files", written.files},
-                     {"warnings", written.warnings}};
+                     {"waypoints", r.waypoints},
+                     {"rests", r.rests},
+                     {"duration_s", r.duration_s},
+                     {"trapezoid_duration_s", r.trapezoid_duration_s},
+                     {"trapezoid_ratio", r.trapezoid_ratio},
+                     {"samples", r.samples_checked},
+                     {"rate_hz", r.rate_hz},
+                     {"streamed_samples", r.streamed_samples},
+                     {"peak_velocity_ratio", r.peak_velocity_ratio},
+                     {"peak_acceleration_ratio", r.peak_acceleration_ratio},
+                     {"peak_jerk_ratio", r.peak_jerk_ratio},
+                     {"max_path_deviation", r.max_path_deviation},
+                     {"check_ok", r.check_ok},
+                     {"blends", r.blends},
+                     {"rests_added_for_clearance", r.rests_added},
+                     {"violations", r.violations},
+                     {"files", files},
+                     {"warnings", r.warnings}};
     std::cout << j.dump() << std::endl;
   }
-  return check.ok ? kOk : kFailed;
+  return r.check_ok ? kOk : kFailed;
+}
+
+// Help texts from the registry, so that a new format shows up by itself.
+std::string format_choices() {
+  const auto ids = program_format_ids();
+  std::string s;
+  for (size_t i = 0; i < ids.size(); ++i) s += (i == 0 ? "" : i + 1 == ids.size() ? " or " : ", ") + ids[i];
+  return s;
+}
+
+std::string file_name_examples() {
+  std::string s;
+  for (const ProgramWriter* w : program_writers())
+    s += (s.empty() ? "" : ", ") + w->id() + ": " + w->file_name("name");
+  return s;
 }
 
 }  // namespace
@@ -119,11 +113,12 @@ Command register_export_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("export", "time a planned path within the robot's limits and write it as a robot program");
   sub->add_option("path", o->path_file, "path JSON (demoplan-path)")->required()->check(CLI::ExistingFile);
   sub->add_option("--robot", o->robot, "robot name from robots.json (default: the path's)");
-  sub->add_option("--format", o->format, "urscript, krl, sunrise, franka, ros-yaml or csv")
-      ->required()
-      ->check(CLI::IsMember(export_formats()));
-  sub->add_option("--out", o->out, "file to write (krl: NAME.src, NAME.dat beside it; sunrise: CLASS.java)")->required();
-  sub->add_option("--rate", o->rate, "Hz of sampled output: csv and ros-yaml (default 100), URScript servoj (125 or 500); franka is 1000")
+  sub->add_option("--format", o->format, format_choices())->required()->check(CLI::IsMember(program_format_ids()));
+  sub->add_option("--out", o->out, "file to write (" + file_name_examples() + "; krl writes NAME.dat beside NAME.src)")
+      ->required();
+  sub->add_option("--rate", o->rate,
+                  "Hz of sampled output (URScript servoj: 125 or 500), at which the trajectory is also checked; default " +
+                      default_rates_text())
       ->check(CLI::PositiveNumber);
   sub->add_flag("--servoj", o->servoj, "URScript: stream servoj at --rate instead of movej waypoints");
   sub->add_flag("--krl-ptp", o->krl_ptp, "KRL: PTP with C_PTP approximation instead of PTP_SPLINE blocks");

@@ -4,18 +4,26 @@
 
 namespace demoplan {
 
-ExportResult write_csv(const ExportJob& job, const std::string& file) {
-  const Trajectory& tr = job.trajectory;
-  std::vector<int> joints = job.axes.base;
-  joints.insert(joints.end(), job.axes.arm.begin(), job.axes.arm.end());
-  const double rate = job.options.rate > 0 ? job.options.rate : 100.0;
+namespace {
+
+class CsvWriter final : public ProgramWriter {
+public:
+  CsvWriter() : ProgramWriter({"csv", "CSV (time, joints, gripper)", ".csv", 100.0}) {}
+  ProgramOutput write(const ProgramInput& input, const std::string& file) const override;
+};
+
+ProgramOutput CsvWriter::write(const ProgramInput& input, const std::string& file) const {
+  const Trajectory& tr = input.trajectory;
+  std::vector<int> joints = input.axes.base;
+  joints.insert(joints.end(), input.axes.arm.begin(), input.axes.arm.end());
+  const double rate = sample_rate(input.options);
   std::ostringstream s;
-  for (const auto& line : header_lines(job, "CSV")) s << "# " << line << "\n";
+  for (const auto& line : header_lines(input, "CSV")) s << "# " << line << "\n";
   s << "time";
-  for (int j : joints) s << "," << job.limits.names[j];
-  for (int j : joints) s << ",v_" << job.limits.names[j];
+  for (int j : joints) s << "," << input.limits.names[j];
+  for (int j : joints) s << ",v_" << input.limits.names[j];
   s << ",gripper_closed,waypoint\n";
-  ExportResult result;
+  ProgramOutput result;
   size_t next = 0;
   for (const auto& p : tr.sample(rate, true)) {
     long waypoint = -1;
@@ -28,9 +36,15 @@ ExportResult write_csv(const ExportJob& job, const std::string& file) {
     s << "," << (p.gripper_closed ? 1 : 0) << "," << (waypoint >= 0 && tr.waypoint_times[waypoint] == p.t ? waypoint : -1) << "\n";
     ++result.samples;
   }
-  write_text_file_atomic(file, s.str());
-  result.files.push_back(file);
+  result.files.push_back({file, s.str()});
   return result;
+}
+
+}  // namespace
+
+const ProgramWriter& csv_writer() {
+  static const CsvWriter writer;
+  return writer;
 }
 
 }  // namespace demoplan

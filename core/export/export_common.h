@@ -1,7 +1,6 @@
 #pragma once
-// What every program writer shares: the job (path, trajectory, limits, robot), which joints are
-// the arm, the mobile base and the gripper, the motion blocks between stops, the header comment
-// and atomic text writes.
+// What every program writer shares: its input (path, trajectory, limits, robot), which joints are
+// the arm, the mobile base and the gripper, the motion blocks between stops and the header comment.
 #include <string>
 #include <vector>
 
@@ -39,19 +38,14 @@ struct ExportOptions {
   bool krl_ptp = false;       // KRL: PTP with approximation instead of PTP_SPLINE blocks
 };
 
-struct ExportJob {
+// What a writer turns into a program: the path, its timing and the robot.
+struct ProgramInput {
   const Path& path;
   const Trajectory& trajectory;
   const JointLimitSet& limits;
   const RobotModel& model;
   const RobotAxes& axes;
   const ExportOptions& options;
-};
-
-struct ExportResult {
-  std::vector<std::string> files;
-  std::vector<std::string> warnings;
-  size_t samples = 0;  // streamed samples, for sampled formats
 };
 
 // The path cut at its stops: each block runs from one resting waypoint to the next; the gripper
@@ -62,12 +56,13 @@ struct MotionBlock {
 std::vector<MotionBlock> motion_blocks(const Trajectory& trajectory);
 
 // Header comment lines (without comment markers): robot, source, limits, timing, gripper.
-std::vector<std::string> header_lines(const ExportJob& job, const std::string& format);
+std::vector<std::string> header_lines(const ProgramInput& input, const std::string& format);
 
 std::string fixed(double x, int decimals);
-// Writes to a temporary file beside `path`, then renames it over `path`. Throws InputError.
-void write_text_file_atomic(const std::string& path, const std::string& text);
-// A name made of letters, digits and '_' from a file name's stem, starting with a letter.
+// `text` with every character other than a letter or digit made '_', and `prefix` in front when
+// it does not start with a letter: a name most controller languages accept.
+std::string identifier(const std::string& text, const std::string& prefix);
+// identifier() of a file name's stem (prefix "p_"), at most max_length characters.
 std::string identifier_from_file(const std::string& path, size_t max_length);
 // Values of q at the given slots.
 std::vector<double> pick(const Eigen::VectorXd& q, const std::vector<int>& slots);

@@ -16,30 +16,34 @@ constexpr double kUpper[7] = {2.8973, 1.7628, 2.8973, -0.0698, 2.8973, 3.7525, 2
 
 double round10(double x) { return std::round(x * 1e10) / 1e10; }
 
-}  // namespace
+class FrankaWriter final : public ProgramWriter {
+public:
+  FrankaWriter() : ProgramWriter({"franka", "Franka (1 kHz JSON for libfranka)", ".json", kRate, /*fixed_rate=*/true}) {}
+  ProgramOutput write(const ProgramInput& input, const std::string& file) const override;
+};
 
-ExportResult write_franka(const ExportJob& job, const std::string& file) {
-  const RobotAxes& ax = job.axes;
+ProgramOutput FrankaWriter::write(const ProgramInput& input, const std::string& file) const {
+  const RobotAxes& ax = input.axes;
   if (ax.arm.size() != 7 || !ax.base.empty())
-    throw InputError(file, "robot", "the Franka format is for the 7-axis Panda; " + job.options.robot + " has " +
+    throw InputError(file, "robot", "the Franka format is for the 7-axis Panda; " + input.options.robot + " has " +
                                         std::to_string(ax.arm.size()) + " arm joints" + (ax.base.empty() ? "" : " and a mobile base"));
-  if (job.options.rate > 0 && job.options.rate != kRate)
-    throw InputError(file, "rate", "libfranka runs at 1000 Hz, not " + fixed(job.options.rate, 3));
-  const auto& W = job.path.waypoints;
-  const Trajectory& tr = job.trajectory;
-  ExportResult result;
+  if (input.options.rate > 0 && input.options.rate != kRate)
+    throw InputError(file, "rate", "libfranka runs at 1000 Hz, not " + fixed(input.options.rate, 3));
+  const auto& W = input.path.waypoints;
+  const Trajectory& tr = input.trajectory;
+  ProgramOutput result;
   for (size_t k = 0; k < W.size(); ++k)
     for (size_t j = 0; j < 7; ++j) {
       const double q = W[k].q[ax.arm[j]];
       if (q < kLower[j] || q > kUpper[j]) {
-        result.warnings.push_back("waypoint " + std::to_string(k) + ": " + job.limits.names[ax.arm[j]] + " = " + fixed(q, 4) +
+        result.warnings.push_back("waypoint " + std::to_string(k) + ": " + input.limits.names[ax.arm[j]] + " = " + fixed(q, 4) +
                                   " is outside Franka's published range [" + fixed(kLower[j], 4) + ", " + fixed(kUpper[j], 4) + "]");
         break;
       }
     }
 
   Json names = Json::array();
-  for (int j : ax.arm) names.push_back(job.limits.names[j]);
+  for (int j : ax.arm) names.push_back(input.limits.names[j]);
   Json steps = Json::array(), waypoints = Json::array();
   auto q_of = [&](double t) {
     const Eigen::VectorXd q = tr.motion.at(t).q;
@@ -69,17 +73,23 @@ ExportResult write_franka(const ExportJob& job, const std::string& file) {
   }
   const Json out{{"format", "demoplan-franka-trajectory"},
                  {"version", 1},
-                 {"header", header_lines(job, "Franka JSON 1 kHz")},
+                 {"header", header_lines(input, "Franka JSON 1 kHz")},
                  {"units", "q in rad; one row per 1 ms; gripper width in m, speed in m/s, force in N"},
-                 {"robot", job.options.robot},
+                 {"robot", input.options.robot},
                  {"rate_hz", kRate},
                  {"joint_names", names},
                  {"start", q_of(0.0)},
                  {"waypoints", waypoints},
                  {"steps", steps}};
-  write_json_file_atomic(file, out, -1);
-  result.files.push_back(file);
+  result.files.push_back({file, out.dump() + '\n'});  // as write_json_file_atomic(file, out, -1) wrote it
   return result;
+}
+
+}  // namespace
+
+const ProgramWriter& franka_writer() {
+  static const FrankaWriter writer;
+  return writer;
 }
 
 }  // namespace demoplan

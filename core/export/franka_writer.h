@@ -5,10 +5,10 @@
 // ends at rest, so the generator's first command equals the robot's state and it can return
 // motion_finished on the last. Positions are continuous to the third derivative within
 // Franka's published limits (checked by finite differences at 1 kHz in the tests).
-#include "core/export/export_common.h"
+#include "core/export/program_writer.h"
 
 namespace demoplan {
 
-ExportResult write_franka(const ExportJob& job, const std::string& file);
+const ProgramWriter& franka_writer();
 
 }  // namespace demoplan

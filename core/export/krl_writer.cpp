@@ -1,5 +1,6 @@
 #include "core/export/krl_writer.h"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -30,30 +31,40 @@ std::string e6axis(const Eigen::VectorXd& q, const std::vector<int>& arm, const 
   return s + "}";
 }
 
-}  // namespace
+class KrlWriter final : public ProgramWriter {
+public:
+  KrlWriter() : ProgramWriter({"krl", "KUKA KRL (.src + .dat)", ".src", 100.0}) {}
+  // NAME.src: KRL names are at most 24 characters; upper case by KUKA's habit.
+  std::string file_name(const std::string& stem) const override {
+    std::string name = file_stem(stem).substr(0, 24);
+    for (char& c : name) c = char(std::toupper(static_cast<unsigned char>(c)));
+    return name + format().extension;
+  }
+  ProgramOutput write(const ProgramInput& input, const std::string& file) const override;
+};
 
-ExportResult write_krl(const ExportJob& job, const std::string& file) {
-  const RobotAxes& ax = job.axes;
+ProgramOutput KrlWriter::write(const ProgramInput& input, const std::string& file) const {
+  const RobotAxes& ax = input.axes;
   if (!ax.base.empty())
-    throw InputError(file, "robot", job.options.robot + " has a mobile base, which a KR C4 does not drive: use the sunrise format");
+    throw InputError(file, "robot", input.options.robot + " has a mobile base, which a KR C4 does not drive: use the sunrise format");
   if (ax.arm.empty() || ax.arm.size() > 12)
-    throw InputError(file, "robot", "KRL E6AXIS holds 1 to 12 axes; " + job.options.robot + " has " + std::to_string(ax.arm.size()));
+    throw InputError(file, "robot", "KRL E6AXIS holds 1 to 12 axes; " + input.options.robot + " has " + std::to_string(ax.arm.size()));
   const std::filesystem::path src(file);
   if (src.extension() != ".src") throw InputError(file, "", "a KRL module is written as NAME.src (and NAME.dat)");
   const std::string name = src.stem().string();
   if (name.empty() || name.size() > 24 || !std::isalpha(static_cast<unsigned char>(name[0])) ||
       identifier_from_file(file, 24) != name)
     throw InputError(file, "", "the module name '" + name + "' must be 1-24 letters, digits or '_', starting with a letter");
-  const ExportOptions& o = job.options;
+  const ExportOptions& o = input.options;
   const int close = o.close_output >= 0 ? o.close_output : 1;
   const auto names = axis_names(ax.arm.size());
-  const auto& W = job.path.waypoints;
-  const Trajectory& tr = job.trajectory;
+  const auto& W = input.path.waypoints;
+  const Trajectory& tr = input.trajectory;
 
   std::ostringstream h;
-  for (const auto& line : header_lines(job, o.krl_ptp ? "KRL PTP C_PTP" : "KRL PTP_SPLINE")) h << "; " << line << "\n";
+  for (const auto& line : header_lines(input, o.krl_ptp ? "KRL PTP C_PTP" : "KRL PTP_SPLINE")) h << "; " << line << "\n";
   h << "; Axes: ";
-  for (size_t j = 0; j < names.size(); ++j) h << names[j] << "=" << job.limits.names[ax.arm[j]] << " ";
+  for (size_t j = 0; j < names.size(); ++j) h << names[j] << "=" << input.limits.names[ax.arm[j]] << " ";
   h << "(degrees)\n; Gripper: $OUT[" << close << "] TRUE = close"
     << (o.open_output >= 0 ? ", $OUT[" + std::to_string(o.open_output) + "] TRUE = open" : ", FALSE = open") << "\n";
 
@@ -87,9 +98,14 @@ ExportResult write_krl(const ExportJob& job, const std::string& file) {
   d << "ENDDAT\n";
 
   const std::string dat = (src.parent_path() / (name + ".dat")).string();
-  write_text_file_atomic(file, s.str());
-  write_text_file_atomic(dat, d.str());
-  return {{file, dat}, {}, 0};
+  return {{{file, s.str()}, {dat, d.str()}}, {}, 0};
+}
+
+}  // namespace
+
+const ProgramWriter& krl_writer() {
+  static const KrlWriter writer;
+  return writer;
 }
 
 }  // namespace demoplan

@@ -5,11 +5,11 @@
 // never both in one block. Arm joints map to A1..A6; a 7-axis arm puts its third joint on E1
 // (KUKA's convention for the LBR on KR C controllers). Mobile bases are refused. The gripper is
 // driven by $OUT.
-#include "core/export/export_common.h"
+#include "core/export/program_writer.h"
 
 namespace demoplan {
 
-// `file` names the .src (its stem is the module name); the .dat is written beside it.
-ExportResult write_krl(const ExportJob& job, const std::string& file);
+// The file is NAME.src (NAME the module name); NAME.dat is the second file, beside it.
+const ProgramWriter& krl_writer();
 
 }  // namespace demoplan

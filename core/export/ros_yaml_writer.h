@@ -3,10 +3,10 @@
 // between two rests, with the URDF's joint names (arm and base; the fingers are the gripper's
 // business). After each, `gripper_after` says whether to grasp or release before the next one.
 // Points every 1/rate s plus one exactly at each waypoint.
-#include "core/export/export_common.h"
+#include "core/export/program_writer.h"
 
 namespace demoplan {
 
-ExportResult write_ros_yaml(const ExportJob& job, const std::string& file);
+const ProgramWriter& ros_yaml_writer();
 
 }  // namespace demoplan

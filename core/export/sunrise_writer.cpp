@@ -1,5 +1,6 @@
 #include "core/export/sunrise_writer.h"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -8,23 +9,45 @@
 
 namespace demoplan {
 
-ExportResult write_sunrise(const ExportJob& job, const std::string& file) {
-  const RobotAxes& ax = job.axes;
-  if (ax.arm.size() != 7) throw InputError(file, "robot", "Sunrise drives the 7-axis LBR iiwa; " + job.options.robot + " has " + std::to_string(ax.arm.size()) + " arm joints");
+namespace {
+
+class SunriseWriter final : public ProgramWriter {
+public:
+  SunriseWriter() : ProgramWriter({"sunrise", "KUKA Sunrise (Java application)", ".java", 100.0}) {}
+  // CLASS.java, the class name in CamelCase: "shelf_1_panda" -> "Shelf1Panda".
+  std::string file_name(const std::string& stem) const override {
+    std::string cls;
+    bool up = true;
+    for (char c : file_stem(stem)) {
+      if (c == '_') {
+        up = true;
+        continue;
+      }
+      cls += up ? char(std::toupper(static_cast<unsigned char>(c))) : c;
+      up = false;
+    }
+    return cls + format().extension;
+  }
+  ProgramOutput write(const ProgramInput& input, const std::string& file) const override;
+};
+
+ProgramOutput SunriseWriter::write(const ProgramInput& input, const std::string& file) const {
+  const RobotAxes& ax = input.axes;
+  if (ax.arm.size() != 7) throw InputError(file, "robot", "Sunrise drives the 7-axis LBR iiwa; " + input.options.robot + " has " + std::to_string(ax.arm.size()) + " arm joints");
   if (!ax.base.empty() && ax.base.size() != 3) throw InputError(file, "robot", "a KMR base has 3 joints (x, y, theta)");
   const std::filesystem::path path(file);
   const std::string cls = path.stem().string();
   if (path.extension() != ".java" || identifier_from_file(file, 200) != cls)
     throw InputError(file, "", "a Sunrise application is written as CLASSNAME.java with CLASSNAME a Java identifier");
-  const ExportOptions& o = job.options;
-  const auto& W = job.path.waypoints;
-  const Trajectory& tr = job.trajectory;
+  const ExportOptions& o = input.options;
+  const auto& W = input.path.waypoints;
+  const Trajectory& tr = input.trajectory;
   const bool mobile = !ax.base.empty();
 
   std::ostringstream s;
-  for (const auto& line : header_lines(job, "Sunrise Java")) s << "// " << line << "\n";
+  for (const auto& line : header_lines(input, "Sunrise Java")) s << "// " << line << "\n";
   s << "// Arm joints A1..A7: ";
-  for (int j : ax.arm) s << job.limits.names[j] << " ";
+  for (int j : ax.arm) s << input.limits.names[j] << " ";
   s << "\n// Gripper: gripperIO.setOutputX3Pin1(true) = close, false = open (MediaFlangeIOGroup).\n";
   if (mobile)
     s << "// KMR: where the base moves, the platform moves first (MobilePlatformRelativeMotion dx, dy in m,\n"
@@ -90,11 +113,17 @@ ExportResult write_sunrise(const ExportJob& job, const std::string& file) {
   s << "  }\n\n"
     << "  private void closeGripper() {\n    gripperIO.setOutputX3Pin1(true);\n    ThreadUtil.milliSleep(GRIPPER_WAIT_MS);\n  }\n\n"
     << "  private void openGripper() {\n    gripperIO.setOutputX3Pin1(false);\n    ThreadUtil.milliSleep(GRIPPER_WAIT_MS);\n  }\n}\n";
-  ExportResult result;
+  ProgramOutput result;
   if (mobile) result.warnings.push_back("the KMR platform and arm move one after the other where the base moves: re-check those segments");
-  write_text_file_atomic(file, s.str());
-  result.files.push_back(file);
+  result.files.push_back({file, s.str()});
   return result;
+}
+
+}  // namespace
+
+const ProgramWriter& sunrise_writer() {
+  static const SunriseWriter writer;
+  return writer;
 }
 
 }  // namespace demoplan

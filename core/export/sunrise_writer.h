@@ -6,11 +6,11 @@
 // (in the platform's frame at the start of the move) followed by the arm's ptp, so between those
 // waypoints the motion is not the planned one (the header says so). The gripper is driven by an
 // output of an I/O group (default: the media flange's X3 pin 1).
-#include "core/export/export_common.h"
+#include "core/export/program_writer.h"
 
 namespace demoplan {
 
-// `file` is CLASSNAME.java; the class name is its stem.
-ExportResult write_sunrise(const ExportJob& job, const std::string& file);
+// The file is CLASSNAME.java; the class name is its stem.
+const ProgramWriter& sunrise_writer();
 
 }  // namespace demoplan

@@ -16,31 +16,36 @@ std::string joint_list(const Eigen::VectorXd& q, const std::vector<int>& slots) 
   return s + "]";
 }
 
-}  // namespace
+class UrScriptWriter final : public ProgramWriter {
+public:
+  // 125 Hz: a CB3's servoj cycle (an e-Series also takes 500).
+  UrScriptWriter() : ProgramWriter({"urscript", "Universal Robots (URScript)", ".script", 125.0}) {}
+  ProgramOutput write(const ProgramInput& input, const std::string& file) const override;
+};
 
-ExportResult write_urscript(const ExportJob& job, const std::string& file) {
-  const RobotAxes& ax = job.axes;
+ProgramOutput UrScriptWriter::write(const ProgramInput& input, const std::string& file) const {
+  const RobotAxes& ax = input.axes;
   if (ax.arm.size() != 6 || !ax.base.empty())
-    throw InputError(file, "robot", "URScript needs a fixed 6-axis arm; " + job.options.robot + " has " +
+    throw InputError(file, "robot", "URScript needs a fixed 6-axis arm; " + input.options.robot + " has " +
                                         std::to_string(ax.arm.size()) + " arm joints" +
                                         (ax.base.empty() ? "" : " and a mobile base"));
-  const ExportOptions& o = job.options;
-  const double rate = o.rate > 0 ? o.rate : 125.0;
+  const ExportOptions& o = input.options;
+  const double rate = sample_rate(o);
   if (o.servoj && rate != 125.0 && rate != 500.0)
     throw InputError(file, "rate", "a servoj stream runs at 125 Hz (CB3) or 500 Hz (e-Series), not " + fixed(rate, 3));
   const int close = o.close_output >= 0 ? o.close_output : 0;
   const std::string name = identifier_from_file(file, 60);
-  const auto& W = job.path.waypoints;
-  const Trajectory& tr = job.trajectory;
+  const auto& W = input.path.waypoints;
+  const Trajectory& tr = input.trajectory;
 
   // movej's a and v bound the leading joint: the smallest of the arm's limits.
   double a = 1e9, v = 1e9;
-  for (int j : ax.arm) a = std::min(a, job.limits.acceleration[j]), v = std::min(v, job.limits.velocity[j]);
+  for (int j : ax.arm) a = std::min(a, input.limits.acceleration[j]), v = std::min(v, input.limits.velocity[j]);
 
   std::ostringstream s;
-  for (const auto& line : header_lines(job, o.servoj ? "URScript servoj" : "URScript movej")) s << "# " << line << "\n";
+  for (const auto& line : header_lines(input, o.servoj ? "URScript servoj" : "URScript movej")) s << "# " << line << "\n";
   s << "# Joints: ";
-  for (int j : ax.arm) s << job.limits.names[j] << " ";
+  for (int j : ax.arm) s << input.limits.names[j] << " ";
   s << "\n# Gripper: standard digital output " << close << " high = close"
     << (o.open_output >= 0 ? ", output " + std::to_string(o.open_output) + " high = open" : ", low = open") << "\n";
   if (o.servoj) s << "# servoj stream at " << fixed(rate, 0) << " Hz from the timed trajectory.\n";
@@ -56,11 +61,11 @@ ExportResult write_urscript(const ExportJob& job, const std::string& file) {
     << ", r=0)\n";
   if (tr.starts_closed) s << "  gripper_close()\n";
 
-  ExportResult result;
+  ProgramOutput result;
   // TCP positions for the blend radii: at most 2 cm and under half the distance to either
   // neighbour, so consecutive blends never overlap.
   std::vector<Eigen::Vector3d> tcp;
-  for (const auto& w : W) tcp.push_back(link_pose(job.model, w.q, Pose::Identity(), ax.tcp_link).translation());
+  for (const auto& w : W) tcp.push_back(link_pose(input.model, w.q, Pose::Identity(), ax.tcp_link).translation());
   for (const MotionBlock& b : motion_blocks(tr)) {
     if (o.servoj) {
       const double t0 = tr.waypoint_times[b.first], t1 = tr.waypoint_times[b.last];
@@ -86,9 +91,15 @@ ExportResult write_urscript(const ExportJob& job, const std::string& file) {
     if (W[b.last].action == GripperAction::Release) s << "  gripper_open()\n";
   }
   s << "end\n";
-  write_text_file_atomic(file, s.str());
-  result.files.push_back(file);
+  result.files.push_back({file, s.str()});
   return result;
+}
+
+}  // namespace
+
+const ProgramWriter& urscript_writer() {
+  static const UrScriptWriter writer;
+  return writer;
 }
 
 }  // namespace demoplan

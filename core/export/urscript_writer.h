@@ -3,10 +3,10 @@
 // radius 0 at the rests and a small radius elsewhere (UR blends cut the corner within r of the
 // waypoint, in TCP metres); option: the timed trajectory as a servoj stream at 125 or 500 Hz,
 // which follows it exactly. The gripper is driven by standard digital outputs.
-#include "core/export/export_common.h"
+#include "core/export/program_writer.h"
 
 namespace demoplan {
 
-ExportResult write_urscript(const ExportJob& job, const std::string& file);
+const ProgramWriter& urscript_writer();
 
 }  // namespace demoplan

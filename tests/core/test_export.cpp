@@ -7,11 +7,14 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <set>
 #include <regex>
 #include <sstream>
 
 #include "core/error.h"
-#include "core/export/exporter.h"
+#include "core/export/export_job.h"
+#include "core/export/program_writers.h"
 #include "core/io/json_file.h"
 #include "core/trajectory/time_parameterization.h"
 #include "tests/core/transition_path.h"
@@ -81,11 +84,17 @@ protected:
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
-  ExportResult run(const Prepared& p, const std::string& format, const std::string& file, ExportOptions o = {}) {
+  // The format's program in memory, then on disk as the CLI and the dialog save it.
+  ProgramOutput run(const Prepared& p, const std::string& format, const std::string& file, ExportOptions o = {}) {
     o.robot = p.c.path.robot;
     o.source = "test path " + p.c.path.task;
-    return export_program(format, {p.c.path, p.trajectory, p.limits, p.c.scene.robot.model, p.axes, o},
-                          (dir_ / file).string());
+    const std::string path = (dir_ / file).string();
+    ProgramOutput out = program_writer(format, path).write(input(p, o), path);
+    write_program_files(out.files);
+    return out;
+  }
+  static ProgramInput input(const Prepared& p, const ExportOptions& o) {
+    return {p.c.path, p.trajectory, p.limits, p.c.scene.robot.model, p.axes, o};
   }
   fs::path dir_;
 };
@@ -124,7 +133,7 @@ TEST_F(Export, UrScriptServojStreamRestsAtTheStops) {
   ExportOptions o;
   o.servoj = true;
   o.rate = 500;
-  const ExportResult r = run(p, "urscript", "stream.script", o);
+  const ProgramOutput r = run(p, "urscript", "stream.script", o);
   std::vector<std::vector<double>> stream;
   std::vector<size_t> rests;  // stream index at each "stopj"
   Actions actions;
@@ -208,7 +217,7 @@ void check_krl(const Prepared& p, const fs::path& src, bool ptp) {
 
 TEST_F(Export, KrlSplineModule) {
   const Prepared& p = prepared("shelf_1", "ur5");
-  const ExportResult r = run(p, "krl", "pick.src");
+  const ProgramOutput r = run(p, "krl", "pick.src");
   EXPECT_EQ(r.files.size(), 2u);
   check_krl(p, dir_ / "pick.src", false);
 }
@@ -223,7 +232,7 @@ TEST_F(Export, KrlPtpModuleForASevenAxisArm) {
 
 TEST_F(Export, SunriseApplicationForTheKmr) {
   const Prepared& p = prepared("waiter_0", "kmr_iiwa");
-  const ExportResult r = run(p, "sunrise", "WaiterPick.java");
+  const ProgramOutput r = run(p, "sunrise", "WaiterPick.java");
   EXPECT_FALSE(r.warnings.empty());  // the platform moves on its own
   const std::string text = read_text(dir_ / "WaiterPick.java");
   EXPECT_NE(text.find("public class WaiterPick extends RoboticsAPIApplication"), std::string::npos);
@@ -415,6 +424,131 @@ TEST_F(Export, FormatsRefuseRobotsThatDoNotFit) {
   EXPECT_NE(message(ur5, "sunrise", "A.java").find("7-axis"), std::string::npos);
   EXPECT_NE(message(ur5, "krl", "9lives.src").find("module name"), std::string::npos);
   EXPECT_NE(message(ur5, "pdf", "a.pdf").find("unknown format"), std::string::npos);
+}
+
+std::string read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+TEST(ExportRegistry, ListsTheSixFormatsOnce) {
+  EXPECT_EQ(program_format_ids(), (std::vector<std::string>{"urscript", "krl", "sunrise", "franka", "ros-yaml", "csv"}));
+  std::set<std::string> ids, extensions;
+  for (const ProgramWriter* w : program_writers()) {
+    SCOPED_TRACE(w->id());
+    ids.insert(w->id());
+    extensions.insert(w->format().extension);
+    EXPECT_FALSE(w->format().label.empty());
+    EXPECT_EQ(w->format().extension.front(), '.');
+    EXPECT_GT(w->format().default_rate, 0.0);
+    EXPECT_EQ(find_program_writer(w->id()), w);
+    const std::string name = w->file_name("shelf 1 panda");
+    EXPECT_EQ(name.substr(name.size() - w->format().extension.size()), w->format().extension) << name;
+  }
+  EXPECT_EQ(ids.size(), program_writers().size());
+  EXPECT_EQ(extensions.size(), program_writers().size());
+  EXPECT_EQ(find_program_writer("pdf"), nullptr);
+  try {
+    program_writer("pdf", "out/a.pdf");
+    ADD_FAILURE() << "no error for an unknown format";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("out/a.pdf"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("unknown format 'pdf'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ExportRegistry, SampleRatesAndFileNames) {
+  ExportOptions o;
+  EXPECT_EQ(program_writer("urscript", "").sample_rate(o), 125.0);
+  EXPECT_EQ(program_writer("csv", "").sample_rate(o), 100.0);
+  EXPECT_EQ(program_writer("ros-yaml", "").sample_rate(o), 100.0);
+  EXPECT_EQ(program_writer("franka", "").sample_rate(o), 1000.0);
+  o.rate = 500;
+  EXPECT_EQ(program_writer("urscript", "").sample_rate(o), 500.0);
+  EXPECT_EQ(program_writer("csv", "").sample_rate(o), 500.0);
+  EXPECT_EQ(program_writer("franka", "").sample_rate(o), 1000.0);  // libfranka's cycle, whatever the options
+  EXPECT_EQ(program_writer("urscript", "").file_name("shelf 1"), "shelf_1.script");
+  EXPECT_EQ(program_writer("franka", "").file_name("shelf_1"), "shelf_1.json");
+  EXPECT_EQ(program_writer("krl", "").file_name("a_very_long_project_name_indeed"), "A_VERY_LONG_PROJECT_NAME.src");
+  EXPECT_EQ(program_writer("sunrise", "").file_name("2 arms"), "Job2Arms.java");
+}
+
+// Every registered format: what write() holds in memory is byte for byte what reaches the disk.
+TEST_F(Export, EveryFormatWritesToMemoryWhatItWritesToDisk) {
+  const std::vector<const Prepared*> robots{&prepared("shelf_1", "ur5"), &prepared("shelf_1", "panda"),
+                                            &prepared("waiter_0", "kmr_iiwa")};
+  for (const ProgramWriter* w : program_writers()) {
+    SCOPED_TRACE(w->id());
+    const std::string file = (dir_ / w->file_name("same bytes")).string();
+    std::optional<ProgramOutput> out;
+    for (const Prepared* p : robots) {
+      ExportOptions o;
+      o.robot = p->c.path.robot;
+      try {
+        out = w->write(input(*p, o), file);
+        break;
+      } catch (const InputError&) {  // the format does not fit this robot: the next one
+      }
+    }
+    ASSERT_TRUE(out) << "no test robot fits";
+    ASSERT_FALSE(out->files.empty());
+    EXPECT_EQ(out->files.front().name, file);
+    for (const ProgramFile& f : out->files) EXPECT_FALSE(fs::exists(f.name)) << f.name << " written before asked";
+    write_program_files(out->files);
+    for (const ProgramFile& f : out->files) {
+      EXPECT_GT(f.text.size(), 200u) << f.name;
+      EXPECT_EQ(read_bytes(f.name), f.text) << f.name;
+    }
+  }
+}
+
+// The pipeline the CLI and the dialog share: timing, the check at the format's rate, the program
+// in memory; the disk untouched.
+TEST_F(Export, ExportJobChecksAtTheFormatsRateAndWritesNothing) {
+  struct Case {
+    std::string task, robot, format;
+    double rate;
+    bool servoj;
+    double expected_rate;
+  };
+  for (const Case& c : {Case{"shelf_1", "ur5", "urscript", 0, true, 125}, Case{"shelf_1", "ur5", "csv", 0, false, 100},
+                        Case{"shelf_1", "ur5", "csv", 50, false, 50}, Case{"shelf_1", "panda", "franka", 0, false, 1000}}) {
+    SCOPED_TRACE(c.format + " " + c.robot);
+    const Prepared& p = prepared(c.task, c.robot);
+    ExportSettings s;
+    s.format = c.format;
+    s.rate = c.rate;
+    s.servoj = c.servoj;
+    s.source = "test.path.json";
+    s.file = (dir_ / program_writer(c.format, "").file_name("job")).string();
+    const ExportReport r = run_export_job(p.c.scene, p.c.path, s);
+    EXPECT_EQ(r.rate_hz, c.expected_rate);
+    EXPECT_TRUE(r.check_ok) << (r.violations.empty() ? "" : r.violations.front());
+    EXPECT_GT(r.duration_s, 0.5);
+    EXPECT_NEAR(r.trapezoid_ratio, r.trapezoid_duration_s / r.duration_s, 1e-12);
+    EXPECT_GE(r.samples_checked, static_cast<size_t>(r.duration_s * c.expected_rate));
+    EXPECT_LE(r.peak_velocity_ratio, 1.0);
+    EXPECT_EQ(r.waypoints, p.c.path.waypoints.size());
+    EXPECT_FALSE(r.limits.empty());
+    ASSERT_EQ(r.files.size(), 1u);
+    EXPECT_EQ(r.files.front().name, s.file);
+    EXPECT_NE(r.files.front().text.find("test.path.json"), std::string::npos);  // the header names the source
+    if (c.format != "urscript" || c.servoj) {
+      EXPECT_GT(r.streamed_samples, 0u);
+    }
+    EXPECT_FALSE(fs::exists(s.file));
+  }
+  ExportSettings s;
+  s.format = "urscript";
+  s.file = "arm.script";
+  try {
+    run_export_job(prepared("shelf_1", "panda").c.scene, prepared("shelf_1", "panda").c.path, s);
+    ADD_FAILURE() << "URScript accepted a 7-axis arm";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("arm.script"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("6-axis"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists("arm.script"));
 }
 
 }  // namespace

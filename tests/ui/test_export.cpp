@@ -2,11 +2,14 @@
 // duration, saves it, and marks the Export step done; a format that does not fit the robot is
 // refused with the reason.
 #include <QComboBox>
+#include <QDir>
+#include <QFileSystemWatcher>
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "core/export/program_writers.h"
 #include "ui/document/document.h"
 #include "ui/document/program_export.h"
 #include "ui/widgets/export_dialog.h"
@@ -55,9 +58,9 @@ private slots:
   }
 
   void fileNamesFitTheFormats() {
-    QCOMPARE(program_file_name("krl", "shelf 1"), std::string("SHELF_1.src"));
-    QCOMPARE(program_file_name("sunrise", "shelf_1_panda"), std::string("Shelf1Panda.java"));
-    QCOMPARE(program_file_name("csv", "2job"), std::string("job_2job.csv"));
+    QCOMPARE(program_writer("krl", "").file_name("shelf 1"), std::string("SHELF_1.src"));
+    QCOMPARE(program_writer("sunrise", "").file_name("shelf_1_panda"), std::string("Shelf1Panda.java"));
+    QCOMPARE(program_writer("csv", "").file_name("2job"), std::string("job_2job.csv"));
   }
 
   void previewsAndSaves() {
@@ -80,6 +83,75 @@ private slots:
     QVERIFY(dialog.saveTo(out));
     QVERIFY(QFileInfo(out).size() > 200);
     QCOMPARE(doc.steps()->state(Step::Export).status, StepStatus::Ok);
+  }
+
+  void listsEveryRegisteredFormat() {
+    Document doc(test::dataDir().toStdString());
+    doc.open(project_);
+    ExportDialog dialog(&doc, false);
+    QCOMPARE(dialog.formatBox()->count(), int(program_writers().size()));
+    for (const ProgramWriter* w : program_writers()) {
+      const int i = dialog.formatBox()->findData(QString::fromStdString(w->id()));
+      QVERIFY2(i >= 0, w->id().c_str());
+      QCOMPARE(dialog.formatBox()->itemText(i), QString::fromStdString(w->format().label));
+    }
+  }
+
+  // The preview is the job's in-memory program: no file appears in the temporary folder or the
+  // working directory, whatever the format; only Save writes.
+  void previewWritesNoFiles() {
+    QTemporaryDir temp, work;
+    QVERIFY(temp.isValid() && work.isValid());
+    const QByteArray old_tmpdir = qgetenv("TMPDIR");
+    const QString old_cwd = QDir::currentPath();
+    qputenv("TMPDIR", temp.path().toLocal8Bit());
+    QDir::setCurrent(work.path());
+    // A folder made and removed again in between leaves it empty: count every change.
+    QFileSystemWatcher watcher({temp.path(), work.path()});
+    int changes = 0;
+    connect(&watcher, &QFileSystemWatcher::directoryChanged, this, [&changes] { ++changes; });
+    {
+      Document doc(test::dataDir().toStdString());
+      doc.open(project_);
+      ExportDialog dialog(&doc, false);
+      for (int i = 0; i < dialog.formatBox()->count(); ++i) {
+        dialog.formatBox()->setCurrentIndex(i);
+        if (dialog.last().ok) {
+          QVERIFY(!dialog.last().files.empty());
+          QVERIFY(dialog.preview()->toPlainText().size() > 200);
+        }
+      }
+      dialog.formatBox()->setCurrentIndex(dialog.formatBox()->findData(QStringLiteral("csv")));
+      QVERIFY(dialog.last().ok);
+      QVERIFY(dialog.preview()->toPlainText().startsWith(QString::fromStdString(dialog.last().files.front().text)));
+    }
+    QTest::qWait(200);  // inotify's events
+    QCOMPARE(changes, 0);
+    QDir::setCurrent(old_cwd);
+    if (old_tmpdir.isNull()) qunsetenv("TMPDIR");
+    else qputenv("TMPDIR", old_tmpdir);
+    const auto entries = QDir::Filter::AllEntries | QDir::Filter::NoDotAndDotDot | QDir::Filter::Hidden;
+    QVERIFY2(QDir(temp.path()).entryList(entries).isEmpty(), qPrintable(QDir(temp.path()).entryList(entries).join(' ')));
+    QVERIFY2(QDir(work.path()).entryList(entries).isEmpty(), qPrintable(QDir(work.path()).entryList(entries).join(' ')));
+  }
+
+  // What the preview shows is what Save writes, byte for byte (KRL: the .src and the .dat).
+  void savesWhatThePreviewShows() {
+    Document doc(test::dataDir().toStdString());
+    doc.open(project_);
+    ExportDialog dialog(&doc, false);
+    dialog.formatBox()->setCurrentIndex(dialog.formatBox()->findData(QStringLiteral("krl")));
+    QVERIFY2(dialog.last().ok, dialog.last().error.c_str());
+    const std::vector<ProgramFile> shown = dialog.last().files;
+    QCOMPARE(shown.size(), size_t(2));
+    QCOMPARE(shown.front().name, std::string("SWING.src"));  // the project's name, as KRL wants it
+    QTemporaryDir out;
+    QVERIFY(dialog.saveTo(out.filePath(QStringLiteral("SWING.src"))));
+    for (const ProgramFile& f : shown) {
+      QFile saved(out.filePath(QString::fromStdString(f.name)));
+      QVERIFY2(saved.open(QIODevice::ReadOnly), f.name.c_str());
+      QCOMPARE(saved.readAll().toStdString(), f.text);
+    }
   }
 
   void refusesAFormatThatDoesNotFitTheRobot() {

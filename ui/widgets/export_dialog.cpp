@@ -15,9 +15,10 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSpinBox>
-#include <QTemporaryDir>
 #include <QVBoxLayout>
 
+#include "core/error.h"
+#include "core/export/program_writers.h"
 #include "ui/widgets/style.h"
 
 namespace demoplan::ui {
@@ -30,7 +31,8 @@ ExportDialog::ExportDialog(Document* doc, bool interactive, QWidget* parent)
   auto* top = new QHBoxLayout;
   auto* form = new QFormLayout;
   format_ = new QComboBox(this);
-  for (const auto& f : program_formats()) format_->addItem(QString::fromStdString(f.label), QString::fromStdString(f.id));
+  for (const ProgramWriter* w : program_writers())
+    format_->addItem(QString::fromStdString(w->format().label), QString::fromStdString(w->id()));
   format_->setToolTip(tr("The controller's language. Formats that do not fit the robot (URScript needs a 6-axis "
                          "arm) say so below."));
   // A sensible first choice for the robot.
@@ -56,7 +58,8 @@ ExportDialog::ExportDialog(Document* doc, bool interactive, QWidget* parent)
   rate_->setDecimals(0);
   rate_->setSuffix(QStringLiteral(" Hz"));
   rate_->setSpecialValueText(tr("format default"));
-  rate_->setToolTip(tr("Sample rate of streamed formats (CSV, ROS YAML); Franka always streams at 1 kHz"));
+  rate_->setToolTip(tr("Sample rate of streamed formats, at which the trajectory is also checked. Defaults: %1")
+                        .arg(QString::fromStdString(default_rates_text())));
   form->addRow(tr("Sample rate"), rate_);
   output_ = new QSpinBox(this);
   output_->setRange(-1, 64);
@@ -90,14 +93,26 @@ ExportDialog::ExportDialog(Document* doc, bool interactive, QWidget* parent)
   refreshPreview();
 }
 
-ProgramSettings ExportDialog::settings() const {
-  ProgramSettings s;
+ExportSettings ExportDialog::settings(const std::string& file) const {
+  ExportSettings s;
   s.format = format_->currentData().toString().toStdString();
   s.velocity_scale = velocity_->value() / 100.0;
   s.acceleration_scale = acceleration_->value() / 100.0;
   s.rate = rate_->value();
   s.gripper_output = output_->value();
+  s.file = file;
+  // Errors about the path name its file; without one, the header says which plan it is.
+  const PlanResultData* r = doc_->planning()->result();
+  if (r && !r->summary.path.empty()) s.source = r->summary.path;
+  else if (r && r->path) s.source = r->path->task + " " + r->path->robot + " pose " + std::to_string(r->path->robot_pose);
   return s;
+}
+
+std::string ExportDialog::defaultFileName() const {
+  const std::string stem =
+      QFileInfo(doc_->filePath().isEmpty() ? QStringLiteral("job") : doc_->filePath()).completeBaseName().toStdString();
+  const ProgramWriter* w = find_program_writer(format_->currentData().toString().toStdString());
+  return w ? w->file_name(stem) : stem;
 }
 
 void ExportDialog::refreshPreview() {
@@ -109,11 +124,7 @@ void ExportDialog::refreshPreview() {
     return;
   }
   QApplication::setOverrideCursor(Qt::WaitCursor);
-  QTemporaryDir dir;
-  const ProgramSettings s = settings();
-  const std::string stem = QFileInfo(doc_->filePath().isEmpty() ? QStringLiteral("job") : doc_->filePath()).completeBaseName().toStdString();
-  const std::string file = dir.filePath(QString::fromStdString(program_file_name(s.format, stem))).toStdString();
-  last_ = export_program_file(doc_->scene(), *r->path, doc_->dataDir(), s, file);
+  last_ = run_program_export(doc_->scene(), *r->path, doc_->dataDir(), settings(defaultFileName()));
   QApplication::restoreOverrideCursor();
   QString html;
   if (!last_.ok) {
@@ -131,7 +142,7 @@ void ExportDialog::refreshPreview() {
     html += tr("<br>%n corner(s) passed without stopping, each checked collision-free", nullptr, int(last_.blends));
     if (last_.rests_added > 0)
       html += tr("; the robot stops at %n more where passing would touch the scene", nullptr, int(last_.rests_added));
-    preview_->setPlainText(QString::fromStdString(last_.text));
+    preview_->setPlainText(QString::fromStdString(program_preview_text(last_.files)));
   }
   if (!last_.limits.empty()) {
     html += tr("<br><small>Limits used:");
@@ -147,17 +158,24 @@ void ExportDialog::refreshPreview() {
 bool ExportDialog::saveTo(const QString& file_in) {
   const PlanResultData* r = doc_->planning()->result();
   if (!r || !r->path) return false;
-  const ProgramSettings s = settings();
   QString file = file_in;
   if (file.isEmpty()) {
     if (!interactive_) return false;
     const QString dir = doc_->filePath().isEmpty() ? QDir::homePath() : QFileInfo(doc_->filePath()).absolutePath();
-    const std::string stem = QFileInfo(doc_->filePath().isEmpty() ? QStringLiteral("job") : doc_->filePath()).completeBaseName().toStdString();
     file = QFileDialog::getSaveFileName(this, tr("Save the program"),
-                                        dir + QLatin1Char('/') + QString::fromStdString(program_file_name(s.format, stem)));
+                                        dir + QLatin1Char('/') + QString::fromStdString(defaultFileName()));
     if (file.isEmpty()) return false;
   }
-  const ProgramExport out = export_program_file(doc_->scene(), *r->path, doc_->dataDir(), s, file.toStdString());
+  // Again for this file: its name is the program's (KRL module, Sunrise class, URScript function).
+  ProgramExport out = run_program_export(doc_->scene(), *r->path, doc_->dataDir(), settings(file.toStdString()));
+  if (out.ok) {
+    try {
+      write_program_files(out.files);
+    } catch (const InputError& e) {
+      out.ok = false;
+      out.error = e.what();
+    }
+  }
   last_ = out;
   if (!out.ok) {
     if (interactive_) QMessageBox::critical(this, tr("Cannot export"), QString::fromStdString(out.error));
@@ -165,7 +183,7 @@ bool ExportDialog::saveTo(const QString& file_in) {
                           .arg(kErrorColor.name(), QString::fromStdString(out.error).toHtmlEscaped()));
     return false;
   }
-  doc_->steps()->markExported(QString::fromStdString(out.files.empty() ? file.toStdString() : out.files.front()));
+  doc_->steps()->markExported(QString::fromStdString(out.files.empty() ? file.toStdString() : out.files.front().name));
   return true;
 }
 

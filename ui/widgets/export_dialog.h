@@ -1,7 +1,7 @@
 #pragma once
-// Export: pick the controller's format, see the program text, its duration and the limits it
-// keeps, and save it. The path is timed within the robot's joint limits and checked
-// independently before anything is written (core/trajectory, core/export).
+// Export: pick the controller's format (from the registry of program writers), see the program
+// text, its duration and the limits it keeps, and save it. The export job times the path within
+// the robot's joint limits and checks it independently in memory; only Save writes files.
 #include <QDialog>
 
 #include "ui/document/document.h"
@@ -26,10 +26,12 @@ public:
   const ProgramExport& last() const { return last_; }
   // Writes the program to `file` (asks where when empty and interactive); true when written.
   bool saveTo(const QString& file = QString());
+  // Runs the export job in memory and shows the program; writes nothing.
   void refreshPreview();
 
 private:
-  ProgramSettings settings() const;
+  ExportSettings settings(const std::string& file) const;
+  std::string defaultFileName() const;  // the format's name for the project's file
   Document* doc_;
   bool interactive_;
   QComboBox* format_;
