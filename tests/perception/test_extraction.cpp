@@ -12,6 +12,7 @@
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/synthetic_video.h"
+#include "perception/tracking/marker_pose_tracker.h"
 #include "perception/video/video_reader.h"
 
 namespace fs = std::filesystem;
@@ -36,7 +37,8 @@ protected:
   static void TearDownTestSuite() { fs::remove_all(dir_); }
   static ExtractionResult extract(const ExtractionOptions& options = {}, const std::string& video = "") {
     const MarkerScene scene = load_marker_scene(out_.scene);
-    return extract_demonstration(video.empty() ? out_.video : video, load_camera(out_.camera), scene, options);
+    MarkerPoseTracker tracker(scene);
+    return extract_demonstration(video.empty() ? out_.video : video, load_camera(out_.camera), tracker, scene.task, options);
   }
   static fs::path dir_;
   static SynthOutput out_;
@@ -86,7 +88,8 @@ TEST_F(Extraction, FromPoseEstimatesAndHandsOnly) {
   ExtractionOptions o;
   o.bop_csv = out_.bop_csv;
   o.hands_json = out_.hands;
-  const ExtractionResult r = extract_demonstration(out_.video, load_camera(out_.camera), scene, o);
+  MarkerPoseTracker tracker(scene);
+  const ExtractionResult r = extract_demonstration(out_.video, load_camera(out_.camera), tracker, scene.task, o);
   expect_matches_truth(r.demonstration, load_demonstration(out_.truth), 15.0, 3.0);
 }
 
@@ -119,7 +122,9 @@ TEST_F(Extraction, CorruptVideoNamesTheFrame) {
   const auto s = write_synthetic_demonstration(o, (dir_ / "corrupt").string());
   fs::resize_file(s.video, fs::file_size(s.video) * 2 / 3);
   try {
-    extract_demonstration(s.video, load_camera(s.camera), load_marker_scene(s.scene));
+    const MarkerScene scene = load_marker_scene(s.scene);
+    MarkerPoseTracker tracker(scene);
+    extract_demonstration(s.video, load_camera(s.camera), tracker, scene.task);
     FAIL() << "a truncated video was accepted";
   } catch (const InputError& e) {
     const std::string what = e.what();
