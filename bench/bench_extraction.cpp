@@ -22,6 +22,7 @@
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/synthetic_video.h"
+#include "perception/tracking/marker_pose_tracker.h"
 #include "perception/tracking/pose_track.h"
 
 namespace fs = std::filesystem;
@@ -114,7 +115,8 @@ int main(int argc, char** argv) {
         for (auto& o : scene.objects) o.markers.clear();
         eo.bop_csv = s.bop_csv;
       }
-      const ExtractionResult r = extract_demonstration(s.video, load_camera(s.camera), scene, eo);
+      MarkerPoseTracker tracker(scene);
+      const ExtractionResult r = extract_demonstration(s.video, load_camera(s.camera), tracker, scene.task, eo);
       const Demonstration truth = load_demonstration(s.truth);
       const DemonstrationEvaluation e = evaluate_demonstration(r.demonstration, truth, 2, benchmark_model_points(data, t));
       Pool one;

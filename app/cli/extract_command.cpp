@@ -12,6 +12,7 @@
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/extraction/tracks_file.h"
 #include "perception/markers/marker_scene.h"
+#include "perception/tracking/marker_pose_tracker.h"
 
 namespace demoplan::cli {
 
@@ -36,7 +37,8 @@ int run_extract(const ExtractCliOptions& o) {
   options.hands_json = o.hands;
   options.board_extrinsics = o.board;
   options.camera_source = camera_path;
-  const perception::ExtractionResult r = perception::extract_demonstration(o.video, camera, scene, options);
+  perception::MarkerPoseTracker tracker(scene);
+  const perception::ExtractionResult r = perception::extract_demonstration(o.video, camera, tracker, scene.task, options);
   save_demonstration(o.out, r.demonstration);
   const std::string tracks = perception::tracks_path_for(o.out);
   perception::save_tracks_file(tracks, r);
@@ -44,7 +46,8 @@ int run_extract(const ExtractCliOptions& o) {
 
   const Demonstration& d = r.demonstration;
   std::cerr << "extracted " << d.events.size() << " events from " << o.video << " (" << r.frames << " frames, "
-            << static_cast<int>(r.frames_per_second) << " frames/s, camera pose from " << r.extrinsics_source << ")\n";
+            << static_cast<int>(r.frames_per_second) << " frames/s, " << r.tracker << " tracker, camera pose from "
+            << r.extrinsics_source << ")\n";
   for (const auto& e : d.events)
     std::cerr << "  frame " << e.frame << "  " << (e.type == EventType::Grasp ? "grasp  " : "release") << "  "
               << d.object_ids[e.object] << "  confidence " << e.confidence << "\n";
@@ -67,6 +70,7 @@ int run_extract(const ExtractCliOptions& o) {
                                 {"extraction_fps", r.frames_per_second},
                                 {"extraction_time_s", r.seconds},
                                 {"extrinsics", r.extrinsics_source},
+                                {"tracker", r.tracker},
                                 {"demonstration", o.out},
                                 {"tracks", tracks},
                                 {"warnings", r.warnings},

@@ -25,6 +25,13 @@ Pose pose_from_xyz_quat(const Eigen::Vector3d& xyz, const Eigen::Quaterniond& q)
   return T;
 }
 
+Pose interpolate(const Pose& a, const Pose& b, double s) {
+  Pose out = Pose::Identity();
+  out.translation() = (1 - s) * a.translation() + s * b.translation();
+  out.linear() = Eigen::Quaterniond(a.linear()).slerp(s, Eigen::Quaterniond(b.linear())).toRotationMatrix();
+  return out;
+}
+
 Eigen::Vector3d log3(const Eigen::Matrix3d& R) {
   const Eigen::AngleAxisd aa(R);
   return aa.angle() * aa.axis();

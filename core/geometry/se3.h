@@ -19,6 +19,9 @@ Vector6d log6(const Pose& T);
 // SO(3) logarithm as a rotation vector.
 Eigen::Vector3d log3(const Eigen::Matrix3d& R);
 
+// Between two poses: translation linear, rotation spherical (slerp); s = 0 gives a, 1 gives b.
+Pose interpolate(const Pose& a, const Pose& b, double s);
+
 // True when R is a rotation: R^T R = I and det R = 1, both within tol.
 bool is_rotation(const Eigen::Matrix3d& R, double tol = 1e-6);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/geometry/se3.h"
 #include "core/model/kinematics.h"
 
 namespace demoplan {
@@ -72,10 +73,7 @@ SceneState PathInterpolator::on_segment(size_t k, const Eigen::VectorXd& q, doub
       s.objects[o] = links[m.link] * m.link_T_object;
     } else if (!(a.matrix() == b.matrix())) {
       // Uncarried: interpolate, so a validator sees it move.
-      Pose p = Pose::Identity();
-      p.translation() = (1 - u) * a.translation() + u * b.translation();
-      p.linear() = Eigen::Quaterniond(a.linear()).slerp(u, Eigen::Quaterniond(b.linear())).toRotationMatrix();
-      s.objects[o] = p;
+      s.objects[o] = interpolate(a, b, u);
     }
   }
   return s;

@@ -4,7 +4,9 @@
 
 #include <opencv2/calib3d.hpp>
 
-#include "perception/markers/marker_pose.h"
+#include "core/demo/rest_pose.h"
+#include "core/error.h"
+#include "perception/camera/opencv_pose.h"
 
 namespace demoplan::perception {
 
@@ -39,6 +41,20 @@ std::optional<BoardPose> camera_pose_from_board(const MarkerBoard& board, const 
   out.markers = used;
   out.reprojection_px = std::sqrt(sum / static_cast<double>(image.size()));
   return out;
+}
+
+VideoBoardPose camera_pose_from_board_video(VideoReader& video, const Camera& camera, const std::string& camera_source,
+                                            const MarkerDetectorOptions& detector_options, int max_frames) {
+  if (!camera.board)
+    throw InputError(camera_source, "world_T_camera", "the camera file gives neither the camera's pose nor a board to find it");
+  const MarkerDetector detector(camera.board->dictionary, detector_options);
+  PoseList poses;
+  for (int f = 0; f < video.frame_count() && static_cast<int>(poses.size()) < max_frames; ++f)
+    if (const auto b = camera_pose_from_board(*camera.board, camera, detector.detect(video.frame(f)), 3))
+      poses.push_back(b->world_T_camera);
+  if (poses.empty())
+    throw InputError(video.path(), "board", "the board of the camera file is not seen (3 markers or more) in any frame");
+  return {robust_static_pose(poses), static_cast<int>(poses.size())};
 }
 
 }  // namespace demoplan::perception

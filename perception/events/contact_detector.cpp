@@ -1,10 +1,10 @@
 #include "perception/events/contact_detector.h"
 
-#include "perception/tracking/pose_average.h"
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+
+#include "core/demo/rest_pose.h"
 
 namespace demoplan::perception {
 
@@ -21,11 +21,11 @@ double median(std::vector<double> v) {
   return v[m];
 }
 
-// Component-wise median translation and chordal mean rotation.
+// Where the samples are, robust to a few outliers (the same average as the event poses').
 Pose centre_of(const std::vector<const PoseSample*>& s) {
   PoseList poses;
   for (const auto* p : s) poses.push_back(p->pose);
-  return median_pose(poses);
+  return robust_static_pose(poses);
 }
 
 struct Thresholds {

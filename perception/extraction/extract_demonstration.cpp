@@ -1,23 +1,37 @@
 #include "perception/extraction/extract_demonstration.h"
 
 #include <chrono>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "perception/camera/board_extrinsics.h"
 #include "perception/events/demonstration_builder.h"
+#include "perception/events/track_smoothing.h"
 #include "perception/importers/bop_csv.h"
 #include "perception/importers/hand_detections.h"
 #include "perception/tracking/bop_fusion.h"
-#include "perception/tracking/pose_average.h"
-#include "perception/tracking/track_smoothing.h"
 #include "perception/video/video_reader.h"
 
 namespace demoplan::perception {
 
-ExtractionResult extract_demonstration(const std::string& video_path, const Camera& camera_in, const MarkerScene& scene,
-                                       const ExtractionOptions& o) {
+namespace {
+
+// A tracker's tracks must have a row per part, in its order: the hand fusion and the
+// demonstration builder index both alike.
+void check_rows(const PoseTracks& tracks, const PoseTracker& tracker) {
+  const auto& parts = tracker.parts();
+  bool same = tracks.object_ids.size() == parts.size();
+  for (size_t k = 0; same && k < parts.size(); ++k) same = tracks.object_ids[k] == parts[k].id;
+  if (!same) throw std::logic_error("pose tracker '" + tracker.name() + "': its tracks are not in the order of its parts");
+}
+
+}  // namespace
+
+ExtractionResult extract_demonstration(const std::string& video_path, const Camera& camera_in, PoseTracker& tracker,
+                                       const std::string& task, const ExtractionOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   ExtractionResult r;
+  r.tracker = tracker.name();
   // Read the optional inputs first: bad input fails before the long part.
   const std::vector<BopDetection> bop = o.bop_csv.empty() ? std::vector<BopDetection>{} : load_bop_csv(o.bop_csv);
   const std::vector<HandFrame> hands = o.hands_json.empty() ? std::vector<HandFrame>{} : load_hand_detections(o.hands_json);
@@ -28,48 +42,40 @@ ExtractionResult extract_demonstration(const std::string& video_path, const Came
                          " but the camera is calibrated for " + std::to_string(camera_in.image_size.width) + "x" +
                          std::to_string(camera_in.image_size.height));
   Camera camera = camera_in;
-  const MarkerDetector detector(scene.dictionary, o.detector);
-  bool have_markers = false;
-  for (const auto& obj : scene.objects) have_markers = have_markers || !obj.markers.empty();
 
   // The camera's pose: from the file, else from the board in the first frames that show it.
   r.extrinsics_source = "file";
   if (o.board_extrinsics || !camera.world_T_camera) {
-    if (!camera.board)
-      throw InputError(o.camera_source, "world_T_camera", "the camera file gives neither the camera's pose nor a board to find it");
-    PoseList poses;
-    for (int f = 0; f < video.frame_count() && static_cast<int>(poses.size()) < o.board_frames; ++f)
-      if (const auto b = camera_pose_from_board(*camera.board, camera, detector.detect(video.frame(f)), 3))
-        poses.push_back(b->world_T_camera);
-    if (poses.empty())
-      throw InputError(video_path, "board", "the board of the camera file is not seen (3 markers or more) in any frame");
-    camera.world_T_camera = median_pose(poses);
-    r.extrinsics_source = "board (" + std::to_string(poses.size()) + " frames)";
+    const VideoBoardPose b = camera_pose_from_board_video(video, camera, o.camera_source, o.board_detector, o.board_frames);
+    camera.world_T_camera = b.world_T_camera;
+    r.extrinsics_source = "board (" + std::to_string(b.frames) + " frames)";
   }
   r.world_T_camera = *camera.world_T_camera;
 
-  MarkerTracker tracker(scene, camera, video.fps(), o.tracker);
   const int frames = video.frame_count();
+  tracker.start({camera, video.fps(), frames});
+  const bool decode = tracker.needs_images();
   for (int f = 0; f < frames; ++f) {
     if (o.cancel && o.cancel->load()) {
       r.cancelled = true;
       r.frames = f;
       return r;
     }
-    if (have_markers) tracker.add_frame(f, detector.detect(video.frame(f)));
+    tracker.track(f, decode ? video.frame(f) : cv::Mat());
     if (o.progress) o.progress(f + 1, frames);
   }
   r.raw = tracker.finish();
+  check_rows(r.raw, tracker);
   r.raw.resize(frames);
   if (!bop.empty()) fuse_bop_detections(r.raw, bop, r.world_T_camera, o.bop_csv, o.bop_weight, &r.warnings);
 
   r.contacts = detect_contacts(r.raw, o.contacts);
   if (!hands.empty()) {
     std::vector<Eigen::AlignedBox3d> bounds;
-    for (const auto& obj : scene.objects) bounds.push_back(marker_extent(obj));
+    for (const auto& part : tracker.parts()) bounds.push_back(part.extent);
     fuse_hand_contacts(r.contacts, hand_contact_runs(hands, r.raw, bounds, camera, o.hands), r.raw, o.hands);
   }
-  r.demonstration = build_demonstration(r.raw, r.contacts, scene.task, o.contacts, &r.warnings);
+  r.demonstration = build_demonstration(r.raw, r.contacts, task, o.contacts, &r.warnings);
   r.smoothed = smooth_tracks(r.raw, r.contacts, o.contacts);
   r.frames = frames;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -1,6 +1,8 @@
 #pragma once
-// The whole extraction: video + camera + marker scene (+ optional BOP pose estimates and hand
-// contacts) -> per-frame part poses -> grasp/release events -> Demonstration.
+// The whole extraction: video + camera + a pose tracker (+ optional BOP pose estimates and hand
+// contacts) -> per-frame part poses -> grasp/release events -> Demonstration. The tracker is
+// the caller's choice (tracking/pose_tracker.h); the camera's pose comes from the camera file
+// or from its board, whatever the tracker.
 #include <atomic>
 #include <functional>
 #include <string>
@@ -11,15 +13,12 @@
 #include "perception/events/contact_detector.h"
 #include "perception/events/hand_fusion.h"
 #include "perception/markers/marker_detector.h"
-#include "perception/markers/marker_scene.h"
-#include "perception/tracking/marker_tracker.h"
 #include "perception/tracking/pose_track.h"
+#include "perception/tracking/pose_tracker.h"
 
 namespace demoplan::perception {
 
 struct ExtractionOptions {
-  MarkerDetectorOptions detector;
-  MarkerTrackerOptions tracker;
   ContactDetectorOptions contacts;
   HandFusionOptions hands;
   std::string bop_csv;     // optional BOP results file
@@ -27,6 +26,7 @@ struct ExtractionOptions {
   std::string camera_source = "camera";  // names the camera file in messages
   bool board_extrinsics = false;  // estimate the camera pose from the board even if the file gives one
   int board_frames = 10;          // frames (with the board seen) averaged for the camera pose
+  MarkerDetectorOptions board_detector;  // finds the board's markers
   double bop_weight = 0.7;  // confidence of a BOP estimate: its score times this
   std::function<void(int done, int total)> progress;
   const std::atomic<bool>* cancel = nullptr;
@@ -38,6 +38,7 @@ struct ExtractionResult {
   ContactAnalysis contacts;
   Pose world_T_camera = Pose::Identity();
   std::string extrinsics_source;  // "file" or "board (N frames)"
+  std::string tracker;            // the tracker's name()
   int frames = 0;
   double seconds = 0.0;           // wall time of the whole extraction
   double frames_per_second = 0.0;
@@ -45,9 +46,10 @@ struct ExtractionResult {
   bool cancelled = false;  // then only `frames` and the timing are meaningful
 };
 
-// Throws InputError for unreadable or inconsistent inputs (naming the file and the frame,
-// line or field).
-ExtractionResult extract_demonstration(const std::string& video, const Camera& camera, const MarkerScene& scene,
-                                       const ExtractionOptions& options = {});
+// `tracker` is started, fed every frame and finished here; `task` names the demonstration's
+// task. Throws InputError for unreadable or inconsistent inputs (naming the file and the
+// frame, line or field).
+ExtractionResult extract_demonstration(const std::string& video, const Camera& camera, PoseTracker& tracker,
+                                       const std::string& task, const ExtractionOptions& options = {});
 
 }  // namespace demoplan::perception

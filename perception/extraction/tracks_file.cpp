@@ -72,6 +72,7 @@ void save_tracks_file(const std::string& path, const ExtractionResult& r) {
                 {{"seconds", r.seconds},
                  {"frames_per_second", r.frames_per_second},
                  {"extrinsics", r.extrinsics_source},
+                 {"tracker", r.tracker},
                  {"world_T_camera", pose_to_json(r.world_T_camera)}}},
                {"objects", objects}};
   write_json_file_atomic(path, j, -1);
@@ -89,6 +90,7 @@ TracksFile load_tracks_file(const std::string& path) {
   t.seconds = ex["seconds"].number();
   t.frames_per_second = ex["frames_per_second"].number();
   t.extrinsics = ex["extrinsics"].string();
+  if (ex.has("tracker")) t.tracker = ex["tracker"].string();  // files written before trackers were named lack it
   const JsonField objects = root["objects"];
   for (PoseTracks* tracks : {&t.raw, &t.smoothed}) {
     tracks->fps = fps;

@@ -5,7 +5,7 @@
 // File "demoplan-pose-tracks" version 1 (JSON):
 //   {"format": "demoplan-pose-tracks", "version": 1, "fps": 30, "frames": 150,
 //    "sample_layout": "[frame, tx, ty, tz, qx, qy, qz, qw, confidence]",
-//    "extraction": {"seconds": 3.2, "frames_per_second": 46.9, "extrinsics": "file",
+//    "extraction": {"seconds": 3.2, "frames_per_second": 46.9, "extrinsics": "file", "tracker": "markers",
 //                   "world_T_camera": {"t": [...], "q": [...]}},
 //    "objects": [{"id": "YCBV_02", "planning": true,
 //                 "raw": [[12, 0.1, 0.4, 0.86, 0, 0, 0, 1, 0.97], ...],   // frames with an estimate
@@ -24,6 +24,7 @@ struct TracksFile {
   PoseTracks raw, smoothed;
   double seconds = 0.0, frames_per_second = 0.0;
   std::string extrinsics;
+  std::string tracker;  // the pose tracker's name; empty in older files
 };
 // Throws InputError.
 TracksFile load_tracks_file(const std::string& path);

@@ -5,6 +5,7 @@
 
 #include "core/demo/benchmark_demonstration.h"
 #include "core/error.h"
+#include "core/geometry/se3.h"
 
 namespace demoplan::perception {
 
@@ -92,7 +93,7 @@ Pose carry_pose(const Pose& A, const Pose& B, double t, double clearance) {
   const double u = 1 - s;
   Pose P = Pose::Identity();
   P.translation() = u * u * u * a + 3 * u * u * s * a1 + 3 * u * s * s * b1 + s * s * s * b;
-  P.linear() = Eigen::Quaterniond(A.linear()).slerp(s, Eigen::Quaterniond(B.linear())).toRotationMatrix();
+  P.linear() = interpolate(A, B, s).linear();  // the path is lifted, the rotation is not
   return P;
 }
 

@@ -7,7 +7,8 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "perception/markers/marker_pose.h"
+#include "perception/camera/opencv_pose.h"
+#include "perception/tracking/marker_pose.h"
 
 namespace demoplan::perception {
 
@@ -75,8 +76,9 @@ MarkerTracker::MarkerTracker(const MarkerScene& scene, const Camera& camera, dou
   if (!camera.world_T_camera) throw std::invalid_argument("MarkerTracker: the camera's pose in the world is unknown");
 }
 
-void MarkerTracker::add_frame(int frame, const std::vector<MarkerDetection>& markers) {
+std::vector<PoseObservation> MarkerTracker::add_frame(int frame, const std::vector<MarkerDetection>& markers) {
   frames_ = std::max(frames_, frame + 1);
+  std::vector<PoseObservation> seen_now;
   // Group the detections by part; where some of a part's markers had all their edges measured,
   // the others are partly hidden and left out.
   std::vector<std::vector<std::pair<const MarkerDetection*, const ObjectMarker*>>> seen(scene_.objects.size());
@@ -191,8 +193,29 @@ void MarkerTracker::add_frame(int frame, const std::vector<MarkerDetection>& mar
         break;
       }
     }
+    const bool ambiguous = obs.alternatives.size() > 1;
+    seen_now.push_back({static_cast<int>(o), sample_of(obs, 0, ambiguous)});
     observations_[o].push_back(std::move(obs));
   }
+  return seen_now;
+}
+
+PoseSample MarkerTracker::sample_of(const Observation& obs, size_t alternative, bool unresolved) const {
+  const bool ambiguous = obs.alternatives.size() > 1;
+  const Alternative& a = obs.alternatives[alternative];
+  PoseSample s;
+  s.valid = true;
+  s.pose = *camera_.world_T_camera * a.camera_T_object;
+  s.markers = obs.markers;
+  s.reprojection_px = a.reprojection_px;
+  s.sigma_translation = a.sigma_translation;
+  s.sigma_rotation = a.sigma_rotation;
+  s.ambiguous = ambiguous;
+  // Confidence that the pose is right (not how precise it is: sigma_* say that).
+  s.confidence = std::exp(-std::pow(a.reprojection_px / 1.5, 2));
+  if (!obs.refined) s.confidence *= 0.8;  // corners not checked against the marker's edges
+  if (ambiguous) s.confidence *= unresolved ? 0.65 : 0.85;
+  return s;
 }
 
 PoseTracks MarkerTracker::finish() {
@@ -203,7 +226,6 @@ PoseTracks MarkerTracker::finish() {
     tracks.planning.push_back(o.planning);
   }
   tracks.resize(frames_);
-  const Pose& world_T_camera = *camera_.world_T_camera;
   for (size_t o = 0; o < observations_.size(); ++o) {
     const auto& obs = observations_[o];
     const int n = static_cast<int>(obs.size());
@@ -225,21 +247,8 @@ PoseTracks MarkerTracker::finish() {
     for (int i = n - 2; i >= 0; --i)
       if (choice[i] < 0 && choice[i + 1] >= 0 && obs[i + 1].frame - obs[i].frame <= options_.max_gap) pick(i, i + 1);
     for (int i = 0; i < n; ++i) {
-      const bool ambiguous = obs[i].alternatives.size() > 1;
       const bool unresolved = choice[i] < 0;
-      const Alternative& a = obs[i].alternatives[unresolved ? 0 : choice[i]];
-      PoseSample& s = tracks.samples[o][obs[i].frame];
-      s.valid = true;
-      s.pose = world_T_camera * a.camera_T_object;
-      s.markers = obs[i].markers;
-      s.reprojection_px = a.reprojection_px;
-      s.sigma_translation = a.sigma_translation;
-      s.sigma_rotation = a.sigma_rotation;
-      s.ambiguous = ambiguous;
-      // Confidence that the pose is right (not how precise it is: sigma_* say that).
-      s.confidence = std::exp(-std::pow(a.reprojection_px / 1.5, 2));
-      if (!obs[i].refined) s.confidence *= 0.8;  // corners not checked against the marker's edges
-      if (ambiguous) s.confidence *= unresolved ? 0.65 : 0.85;
+      tracks.samples[o][obs[i].frame] = sample_of(obs[i], unresolved ? 0 : static_cast<size_t>(choice[i]), unresolved);
     }
   }
   return tracks;

@@ -4,7 +4,8 @@
 // corners is refined on all of them (several faces of a part act as a rigid board). When the
 // visible markers all lie in one plane and the flipped solution explains them almost as well,
 // the frame is ambiguous: finish() picks the solution closest in rotation to the nearest
-// unambiguous frame of the same part, before or after it.
+// unambiguous frame of the same part, before or after it. (MarkerPoseTracker wraps it, with
+// the marker detector, as a PoseTracker.)
 #include <vector>
 
 #include "perception/camera/camera_model.h"
@@ -34,7 +35,8 @@ public:
   // `camera` must have world_T_camera.
   MarkerTracker(const MarkerScene& scene, const Camera& camera, double fps, const MarkerTrackerOptions& options = {});
 
-  void add_frame(int frame, const std::vector<MarkerDetection>& markers);
+  // Returns the parts this frame shows, an ambiguous one with its best solution for now.
+  std::vector<PoseObservation> add_frame(int frame, const std::vector<MarkerDetection>& markers);
   PoseTracks finish();
 
 private:
@@ -49,6 +51,10 @@ private:
     int markers = 0;
     bool refined = false;  // every marker used had its edges measured
   };
+
+  // The sample of an observation with one of its alternatives; `unresolved`: an ambiguous one
+  // that no neighbour decided.
+  PoseSample sample_of(const Observation& observation, size_t alternative, bool unresolved) const;
 
   MarkerScene scene_;
   Camera camera_;

@@ -26,23 +26,4 @@ Pose mean_pose(const PoseList& poses) {
   return out;
 }
 
-Pose median_pose(const PoseList& poses) {
-  Pose out = mean_pose(poses);
-  for (int axis = 0; axis < 3; ++axis) {
-    std::vector<double> v;
-    for (const auto& p : poses) v.push_back(p.translation()[axis]);
-    if (v.empty()) break;
-    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-    out.translation()[axis] = v[v.size() / 2];
-  }
-  return out;
-}
-
-Pose interpolate(const Pose& a, const Pose& b, double s) {
-  Pose out = Pose::Identity();
-  out.translation() = (1 - s) * a.translation() + s * b.translation();
-  out.linear() = Eigen::Quaterniond(a.linear()).slerp(s, Eigen::Quaterniond(b.linear())).toRotationMatrix();
-  return out;
-}
-
 }  // namespace demoplan::perception

@@ -22,6 +22,12 @@ struct PoseSample {
   double sigma_rotation = 0.0;     // rad
 };
 
+// One part's estimate in one frame, as a tracker reports it.
+struct PoseObservation {
+  int object = -1;  // row in the tracks (the tracker's parts() order)
+  PoseSample sample;
+};
+
 struct PoseTracks {
   double fps = 30.0;
   int frames = 0;

@@ -52,3 +52,15 @@ TEST(Se3, IsRotationRejectsScaledAndReflectedMatrices) {
   nan(0, 1) = std::nan("");
   EXPECT_FALSE(is_rotation(nan));
 }
+
+TEST(Se3, InterpolateIsLinearInTranslationAndSphericalInRotation) {
+  const Pose a = pose_from_xyz_rpy({0.1, -0.2, 0.3}, {0.0, 0.0, 0.2});
+  const Pose b = pose_from_xyz_rpy({0.5, 0.2, 0.1}, {0.0, 0.0, 1.4});
+  EXPECT_TRUE(interpolate(a, b, 0.0).isApprox(a, 1e-12));
+  EXPECT_TRUE(interpolate(a, b, 1.0).isApprox(b, 1e-12));
+  const Pose quarter = interpolate(a, b, 0.25);
+  EXPECT_TRUE(quarter.translation().isApprox(Eigen::Vector3d(0.2, -0.1, 0.25), 1e-12));
+  // About one axis (z), slerp turns by the same fraction of the angle: 0.2 + 0.25 * 1.2.
+  EXPECT_TRUE(quarter.linear().isApprox(rotation_from_rpy(0, 0, 0.5), 1e-12));
+  EXPECT_TRUE(is_rotation(interpolate(a, b, 0.7).linear()));
+}

@@ -7,7 +7,7 @@
 #include "perception/events/contact_detector.h"
 #include "perception/events/demonstration_builder.h"
 #include "perception/synthetic/demo_script.h"
-#include "perception/tracking/track_smoothing.h"
+#include "perception/events/track_smoothing.h"
 
 using namespace demoplan;
 using namespace demoplan::perception;

@@ -1,17 +1,23 @@
 // End to end on a short synthetic video: render shelf_0, extract, compare with the truth.
 // Also: the same with simulated pose-estimator and hand-detector outputs, determinism, and
-// clear errors for a corrupt video and a malformed detections file.
+// clear errors for a corrupt video and a malformed detections file. The pipeline drives
+// whichever pose tracker it is given.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "core/error.h"
+#include "core/geometry/se3.h"
 #include "perception/camera/camera_model.h"
 #include "perception/events/evaluation.h"
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/synthetic_video.h"
+#include "perception/tracking/marker_pose_tracker.h"
+#include "perception/tracking/pose_tracker.h"
 #include "perception/video/video_reader.h"
 
 namespace fs = std::filesystem;
@@ -36,7 +42,8 @@ protected:
   static void TearDownTestSuite() { fs::remove_all(dir_); }
   static ExtractionResult extract(const ExtractionOptions& options = {}, const std::string& video = "") {
     const MarkerScene scene = load_marker_scene(out_.scene);
-    return extract_demonstration(video.empty() ? out_.video : video, load_camera(out_.camera), scene, options);
+    MarkerPoseTracker tracker(scene);
+    return extract_demonstration(video.empty() ? out_.video : video, load_camera(out_.camera), tracker, scene.task, options);
   }
   static fs::path dir_;
   static SynthOutput out_;
@@ -53,7 +60,129 @@ void expect_matches_truth(const Demonstration& d, const Demonstration& truth, do
   EXPECT_TRUE(validate(d).empty());
 }
 
+// A tracker that looks at no image: one part rests at A, is carried in a straight line from
+// frame `grasp` to frame `release` and rests at B; it records how the pipeline drives it.
+class ScriptedTracker final : public PoseTracker {
+public:
+  ScriptedTracker(const Pose& a, const Pose& b, int grasp, int release) : a_(a), b_(b), grasp_(grasp), release_(release) {
+    parts_.push_back({"YCBV_02", true, {}});
+  }
+  std::string name() const override { return "scripted"; }
+  const std::vector<TrackedPart>& parts() const override { return parts_; }
+  bool needs_images() const override { return false; }
+  void start(const TrackingStart& start) override {
+    ++starts;
+    started_with = start;
+    tracks_ = {};
+    tracks_.fps = start.fps;
+    tracks_.object_ids = {parts_[0].id};
+    tracks_.planning = {true};
+    tracks_.resize(start.frames);
+  }
+  std::vector<PoseObservation> track(int frame, const cv::Mat& image) override {
+    frames_seen.push_back(frame);
+    images_given = images_given || !image.empty();
+    PoseSample s;
+    s.valid = true;
+    s.confidence = 1.0;
+    s.pose = interpolate(a_, b_, std::clamp(double(frame - grasp_) / (release_ - grasp_), 0.0, 1.0));
+    tracks_.samples[0][frame] = s;
+    return {{0, s}};
+  }
+  PoseTracks finish() override { return tracks_; }
+
+  int starts = 0;
+  TrackingStart started_with;
+  std::vector<int> frames_seen;
+  bool images_given = false;
+
+private:
+  Pose a_, b_;
+  int grasp_, release_;
+  std::vector<TrackedPart> parts_;
+  PoseTracks tracks_;
+};
+
 }  // namespace
+
+TEST_F(Extraction, DrivesTheTrackerItIsGiven) {
+  const int frames = out_.frames, grasp = frames / 4, release = frames / 2;
+  const Pose a = pose_from_xyz_rpy({0.4, 0.1, 0.8}, {0, 0, 0.3});
+  const Pose b = pose_from_xyz_rpy({0.6, -0.2, 1.0}, {0, 0, 1.1});
+  ScriptedTracker tracker(a, b, grasp, release);
+  const Camera camera = load_camera(out_.camera);
+  const ExtractionResult r = extract_demonstration(out_.video, camera, tracker, "shelf_0");
+  // Started once with the camera's pose, every frame in order, no image decoded for it.
+  EXPECT_EQ(tracker.starts, 1);
+  ASSERT_TRUE(tracker.started_with.camera.world_T_camera);
+  EXPECT_TRUE(tracker.started_with.camera.world_T_camera->isApprox(*camera.world_T_camera));
+  EXPECT_EQ(tracker.started_with.frames, frames);
+  EXPECT_DOUBLE_EQ(tracker.started_with.fps, 30.0);
+  ASSERT_EQ(static_cast<int>(tracker.frames_seen.size()), frames);
+  for (int f = 0; f < frames; ++f) EXPECT_EQ(tracker.frames_seen[f], f);
+  EXPECT_FALSE(tracker.images_given);
+  // Its poses, not the markers', make the demonstration.
+  EXPECT_EQ(r.tracker, "scripted");
+  const Demonstration& d = r.demonstration;
+  EXPECT_EQ(d.task, "shelf_0");
+  ASSERT_EQ(d.object_ids, std::vector<std::string>{"YCBV_02"});
+  ASSERT_EQ(d.events.size(), 2u);
+  EXPECT_EQ(d.events[0].type, EventType::Grasp);
+  EXPECT_NEAR(d.events[0].frame, grasp, 1);
+  EXPECT_EQ(d.events[1].type, EventType::Release);
+  EXPECT_NEAR(d.events[1].frame, release, 1);
+  EXPECT_TRUE(d.events[0].poses[0].isApprox(a, 1e-9));
+  EXPECT_TRUE(d.events[1].poses[0].isApprox(b, 1e-9));
+}
+
+TEST_F(Extraction, MarkerTrackerReportsEveryFrameAsItGoes) {
+  const MarkerScene scene = load_marker_scene(out_.scene);
+  MarkerPoseTracker tracker(scene);
+  EXPECT_EQ(tracker.name(), "markers");
+  ASSERT_EQ(tracker.parts().size(), scene.objects.size());
+  EXPECT_EQ(tracker.parts()[0].id, scene.objects[0].id);
+  EXPECT_TRUE(tracker.parts()[0].extent.isApprox(marker_extent(scene.objects[0])));
+  EXPECT_TRUE(tracker.needs_images());
+  VideoReader video(out_.video);
+  tracker.start({load_camera(out_.camera), video.fps(), video.frame_count()});
+  std::vector<std::optional<PoseSample>> live(video.frame_count());
+  int seen = 0;
+  for (int f = 0; f < video.frame_count(); ++f)
+    for (const PoseObservation& o : tracker.track(f, video.frame(f))) {
+      EXPECT_EQ(o.object, 0);
+      live[f] = o.sample, ++seen;
+    }
+  EXPECT_GT(seen, video.frame_count() / 2);
+  // finish() keeps what each frame reported, except where it settles an ambiguity.
+  const PoseTracks tracks = tracker.finish();
+  ASSERT_EQ(tracks.samples.size(), 1u);
+  for (int f = 0; f < video.frame_count(); ++f) {
+    const PoseSample& s = tracks.samples[0][f];
+    EXPECT_EQ(s.valid, live[f].has_value()) << "frame " << f;
+    if (live[f] && !live[f]->ambiguous) {
+      EXPECT_TRUE(s.pose.isApprox(live[f]->pose, 1e-12)) << "frame " << f;
+    }
+  }
+  // Without a marker on any part, no frame needs decoding.
+  MarkerScene bare = scene;
+  for (auto& o : bare.objects) o.markers.clear();
+  EXPECT_FALSE(MarkerPoseTracker(bare).needs_images());
+}
+
+TEST_F(Extraction, CameraWithoutPoseOrBoardNamesTheFile) {
+  Camera camera = load_camera(out_.camera);
+  camera.world_T_camera.reset();
+  camera.board.reset();
+  ExtractionOptions o;
+  o.camera_source = "cam.json";
+  MarkerPoseTracker tracker(load_marker_scene(out_.scene));
+  try {
+    extract_demonstration(out_.video, camera, tracker, "shelf_0", o);
+    FAIL() << "a camera without a pose or a board was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cam.json: world_T_camera"), std::string::npos) << e.what();
+  }
+}
 
 TEST_F(Extraction, RecoversEveryEventAndPose) {
   const Demonstration truth = load_demonstration(out_.truth);
@@ -86,7 +215,8 @@ TEST_F(Extraction, FromPoseEstimatesAndHandsOnly) {
   ExtractionOptions o;
   o.bop_csv = out_.bop_csv;
   o.hands_json = out_.hands;
-  const ExtractionResult r = extract_demonstration(out_.video, load_camera(out_.camera), scene, o);
+  MarkerPoseTracker tracker(scene);
+  const ExtractionResult r = extract_demonstration(out_.video, load_camera(out_.camera), tracker, scene.task, o);
   expect_matches_truth(r.demonstration, load_demonstration(out_.truth), 15.0, 3.0);
 }
 
@@ -119,7 +249,9 @@ TEST_F(Extraction, CorruptVideoNamesTheFrame) {
   const auto s = write_synthetic_demonstration(o, (dir_ / "corrupt").string());
   fs::resize_file(s.video, fs::file_size(s.video) * 2 / 3);
   try {
-    extract_demonstration(s.video, load_camera(s.camera), load_marker_scene(s.scene));
+    const MarkerScene scene = load_marker_scene(s.scene);
+    MarkerPoseTracker tracker(scene);
+    extract_demonstration(s.video, load_camera(s.camera), tracker, scene.task);
     FAIL() << "a truncated video was accepted";
   } catch (const InputError& e) {
     const std::string what = e.what();

@@ -6,10 +6,10 @@
 
 #include "core/error.h"
 #include "perception/markers/marker_detector.h"
-#include "perception/markers/marker_pose.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/marker_layout.h"
 #include "perception/synthetic/rasterizer.h"
+#include "perception/tracking/marker_pose.h"
 
 namespace fs = std::filesystem;
 using namespace demoplan;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/geometry/se3.h"
+
 namespace demoplan::ui {
 
 Pose world_pose_at_event(const Scene& scene, const Demonstration& demo, size_t event, int object,
@@ -14,18 +16,6 @@ Pose world_pose_at_event(const Scene& scene, const Demonstration& demo, size_t e
   if (link < 0 || q.size() != scene.robot.model.nq) return e.poses[object];
   return link_pose(scene.robot.model, q, scene.robot.base, link) * e.poses[object];
 }
-
-namespace {
-
-Pose interpolate(const Pose& a, const Pose& b, double s) {
-  Pose out = Pose::Identity();
-  out.translation() = (1.0 - s) * a.translation() + s * b.translation();
-  const Eigen::Quaterniond qa(a.linear()), qb(b.linear());
-  out.linear() = qa.slerp(s, qb).normalized().toRotationMatrix();
-  return out;
-}
-
-}  // namespace
 
 bool held_at_frame(const Demonstration& demo, int object, double frame) {
   bool held = false;

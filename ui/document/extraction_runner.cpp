@@ -7,6 +7,7 @@
 #include "perception/camera/camera_model.h"
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/markers/marker_scene.h"
+#include "perception/tracking/marker_pose_tracker.h"
 
 namespace demoplan::ui {
 
@@ -77,10 +78,10 @@ bool ExtractionRunner::start(ExtractionJob job) {
         last_percent = percent;
         post([done, total](ExtractionRunner& r) { emit r.progress(done, total); });
       };
-      const perception::ExtractionResult r = perception::extract_demonstration(job.video, camera, scene, options);
+      perception::MarkerPoseTracker tracker(scene);
+      const perception::ExtractionResult r = perception::extract_demonstration(job.video, camera, tracker, job.task, options);
       if (!r.cancelled) {
         outcome->demonstration = reorder_objects(r.demonstration, job.object_ids, job.markers);
-        outcome->demonstration.task = job.task;
         outcome->warnings = r.warnings;
         outcome->frames = r.frames;
         outcome->seconds = r.seconds;

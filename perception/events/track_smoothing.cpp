@@ -1,4 +1,4 @@
-#include "perception/tracking/track_smoothing.h"
+#include "perception/events/track_smoothing.h"
 
 #include <algorithm>
 

@@ -1,34 +1,16 @@
-#include "perception/markers/marker_pose.h"
+#include "perception/tracking/marker_pose.h"
 
 #include <algorithm>
 
 #include <opencv2/calib3d.hpp>
+
+#include "perception/camera/opencv_pose.h"
 
 namespace demoplan::perception {
 
 std::vector<cv::Point3d> marker_corner_points(double size) {
   const double h = size / 2;
   return {{-h, h, 0}, {h, h, 0}, {h, -h, 0}, {-h, -h, 0}};
-}
-
-Pose pose_from_rvec_tvec(const cv::Vec3d& rvec, const cv::Vec3d& tvec) {
-  cv::Matx33d R;
-  cv::Rodrigues(rvec, R);
-  Pose T = Pose::Identity();
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) T.linear()(r, c) = R(r, c);
-    T.translation()[r] = tvec[r];
-  }
-  return T;
-}
-
-void rvec_tvec_from_pose(const Pose& pose, cv::Vec3d& rvec, cv::Vec3d& tvec) {
-  cv::Matx33d R;
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) R(r, c) = pose.linear()(r, c);
-    tvec[r] = pose.translation()[r];
-  }
-  cv::Rodrigues(R, rvec);
 }
 
 std::vector<MarkerPoseCandidate> marker_pose_candidates(const MarkerDetection& marker, double size, const Camera& camera) {

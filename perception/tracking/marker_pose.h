@@ -21,8 +21,4 @@ std::vector<cv::Point3d> marker_corner_points(double size);
 // One or two candidates, smallest reprojection error first.
 std::vector<MarkerPoseCandidate> marker_pose_candidates(const MarkerDetection& marker, double size, const Camera& camera);
 
-// Conversions between OpenCV's rvec/tvec and Pose.
-Pose pose_from_rvec_tvec(const cv::Vec3d& rvec, const cv::Vec3d& tvec);
-void rvec_tvec_from_pose(const Pose& pose, cv::Vec3d& rvec, cv::Vec3d& tvec);
-
 }  // namespace demoplan::perception
