@@ -1,6 +1,7 @@
 #include "ui/widgets/planner_panel.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -13,6 +14,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include "core/planning/planner_registry.h"
 #include "ui/widgets/style.h"
 
 namespace demoplan::ui {
@@ -36,6 +38,14 @@ PlannerPanel::PlannerPanel(Document* doc, QWidget* parent) : QWidget(parent), do
     form->addWidget(field, cell / 2, (cell % 2) * 2 + 1);
     ++cell;
   };
+  planner_ = new QComboBox(this);
+  for (const PlannerEntry& p : registered_planners()) {
+    planner_->addItem(QString::fromStdString(p.name), QString::fromStdString(p.name));
+    planner_->setItemData(planner_->count() - 1, QString::fromStdString(p.description), Qt::ToolTipRole);
+  }
+  planner_->setToolTip(tr("Which planner searches for the path (demoplan-cli plan --planner). \"guided\" roots "
+                          "trees at the grasps and releases seen in the video."));
+  addField(tr("Planner"), planner_);
   seed_ = new QSpinBox(this);
   seed_->setRange(0, 1'000'000'000);
   seed_->setToolTip(tr("Random seed. The same seed and inputs give the same path, bit for bit; try another seed "
@@ -137,6 +147,7 @@ PlannerPanel::PlannerPanel(Document* doc, QWidget* parent) : QWidget(parent), do
   for (auto* s : {time_limit_, eta_, step_, resolution_, shortcut_time_})
     connect(s, &QDoubleSpinBox::valueChanged, this, &PlannerPanel::storeSettings);
   connect(seed_, &QSpinBox::valueChanged, this, &PlannerPanel::storeSettings);
+  connect(planner_, &QComboBox::currentIndexChanged, this, &PlannerPanel::storeSettings);
   connect(max_iterations_, &QSpinBox::valueChanged, this, &PlannerPanel::storeSettings);
   connect(shortcut_, &QCheckBox::toggled, this, &PlannerPanel::storeSettings);
   connect(defaults_, &QPushButton::clicked, this, [this] { doc_->planning()->setSettings(PlannerSettings{}); });
@@ -181,6 +192,13 @@ PlannerPanel::PlannerPanel(Document* doc, QWidget* parent) : QWidget(parent), do
 void PlannerPanel::loadSettings() {
   loading_ = true;
   const PlannerSettings& s = doc_->planning()->settings();
+  const int planner = planner_->findData(QString::fromStdString(s.planner_name));
+  if (planner < 0) {  // a project made with a planner this build does not have
+    planner_->addItem(QString::fromStdString(s.planner_name) + tr(" (not available)"), QString::fromStdString(s.planner_name));
+    planner_->setCurrentIndex(planner_->count() - 1);
+  } else {
+    planner_->setCurrentIndex(planner);
+  }
   seed_->setValue(int(std::min<std::uint64_t>(s.planner.seed, 1'000'000'000)));
   time_limit_->setValue(s.planner.time_limit);
   max_iterations_->setValue(int(std::min<long>(s.planner.max_iterations, 2'000'000'000)));
@@ -196,6 +214,7 @@ void PlannerPanel::loadSettings() {
 void PlannerPanel::storeSettings() {
   if (loading_ || !doc_->hasProject()) return;
   PlannerSettings s = doc_->planning()->settings();
+  s.planner_name = planner_->currentData().toString().toStdString();
   s.planner.seed = std::uint64_t(seed_->value());
   s.planner.time_limit = time_limit_->value();
   s.planner.max_iterations = max_iterations_->value();
@@ -211,7 +230,7 @@ void PlannerPanel::storeSettings() {
 void PlannerPanel::setRunning(bool running) {
   plan_->setEnabled(!running && doc_->hasProject() && doc_->issues().empty());
   cancel_->setEnabled(running);
-  for (QWidget* w : std::initializer_list<QWidget*>{seed_, time_limit_, max_iterations_, eta_, step_, resolution_, shortcut_,
+  for (QWidget* w : std::initializer_list<QWidget*>{planner_, seed_, time_limit_, max_iterations_, eta_, step_, resolution_, shortcut_,
                                                     shortcut_time_, defaults_})
     w->setEnabled(!running);
   if (!running) shortcut_time_->setEnabled(shortcut_->isChecked());

@@ -8,6 +8,7 @@
 #include "ui/document/document.h"
 
 class QCheckBox;
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
@@ -27,6 +28,7 @@ public:
   QTableWidget* stateTable() const { return states_; }
   QLabel* statsLabel() const { return stats_; }
   QLabel* messageLabel() const { return message_; }
+  QComboBox* plannerBox() const { return planner_; }
   QSpinBox* seedBox() const { return seed_; }
   QDoubleSpinBox* timeLimitBox() const { return time_limit_; }
 
@@ -42,6 +44,7 @@ private:
   void onResult();
 
   Document* doc_;
+  QComboBox* planner_;
   QSpinBox* seed_;
   QDoubleSpinBox* time_limit_;
   QSpinBox* max_iterations_;
