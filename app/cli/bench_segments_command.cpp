@@ -184,7 +184,7 @@ int run_bench_segments(const SegmentOptions& o) {
   };
   std::cerr << "\n" << std::left << std::setw(18) << "planner" << std::right << std::setw(6) << "runs" << std::setw(9)
             << "success" << std::setw(11) << "median s" << std::setw(10) << "mean s" << std::setw(12) << "length rad"
-            << std::setw(14) << "median/" + planners.front() << "\n";
+            << "  median s / " << planners.front() << "'s\n";
   for (const auto& name : planners) {
     const auto& group = by_planner[name];
     int ok = 0;
@@ -199,7 +199,7 @@ int run_bench_segments(const SegmentOptions& o) {
                     {"median_path_length_rad", median(lengths)}, {"median_time_ratio", ratio}});
     std::cerr << std::left << std::setw(18) << name << std::right << std::setw(6) << group.size()
               << cell(rate * 100, 8, 1) << "%" << cell(median(times), 11, 4) << cell(mean(times), 10, 4)
-              << cell(median(lengths), 12, 2) << cell(ratio, 14, 2) << "\n";
+              << cell(median(lengths), 12, 2) << cell(ratio, 12, 2) << "\n";
   }
   nlohmann::json segs = nlohmann::json::array(), all = nlohmann::json::array();
   for (const auto& g : segments)

@@ -156,4 +156,35 @@ TEST_F(CliPlanning, OmplBenchmarkStatisticsReadsTheBenchLogUnderItsWholeName) {
   EXPECT_EQ(names, "shelf_0-panda");
 }
 
+// bench-segments: the guided solution of shelf_0 cut into its single-state motions, each solved by
+// our RRT-Connect (and OMPL's when built in) and checked; the table compares median times.
+TEST_F(CliPlanning, BenchSegmentsComparesSingleStatePlanners) {
+  const bool ompl = DEMOPLAN_WITH_OMPL;  // how the CLI was built
+  std::vector<std::string> args{"bench-segments", "--tasks", "shelf_0", "--robots", "panda", "--poses", "1",
+                                "--seeds", "1", "--time-limit", "10", "--json", "--planners",
+                                ompl ? "rrtconnect,ompl-rrtconnect" : "rrtconnect"};
+  const CliResult r = run(args);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = one_object(r);
+  ASSERT_EQ(j["rows"].size(), ompl ? 2u : 1u);
+  ASSERT_GE(j["segments"].size(), 1u);
+  for (const auto& row : j["rows"]) {
+    for (const char* key : {"planner", "runs", "success", "success_rate", "median_time_s", "mean_time_s",
+                            "median_path_length_rad", "median_time_ratio"})
+      EXPECT_TRUE(row.contains(key)) << key;
+    EXPECT_EQ(row["runs"].get<size_t>(), j["segments"].size());
+    EXPECT_EQ(row["success_rate"].get<double>(), 1.0) << row["planner"];
+  }
+  EXPECT_EQ(j["rows"][0]["planner"], "rrtconnect");
+  EXPECT_DOUBLE_EQ(j["rows"][0]["median_time_ratio"].get<double>(), 1.0);
+}
+
+TEST_F(CliPlanning, BenchSegmentsRefusesAnUnknownPlannerNamingTheOption) {
+  const CliResult r = run({"bench-segments", "--tasks", "shelf_0", "--planners", "rrtconnect,ompl-rrt-star"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("--planners"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ompl-rrt-star"), std::string::npos) << r.err;
+}
+
 }  // namespace
