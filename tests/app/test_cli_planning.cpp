@@ -185,6 +185,11 @@ TEST_F(CliPlanning, BenchSegmentsRefusesAnUnknownPlannerNamingTheOption) {
   EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
   EXPECT_NE(r.err.find("--planners"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("ompl-rrt-star"), std::string::npos) << r.err;
+  if (!DEMOPLAN_WITH_OMPL) {  // a known OMPL planner in a build without OMPL: says so
+    const CliResult o = run({"bench-segments", "--tasks", "shelf_0", "--planners", "rrtconnect,ompl-rrtconnect"});
+    EXPECT_EQ(o.code, 2);
+    EXPECT_NE(o.err.find("built without it"), std::string::npos) << o.err;
+  }
 }
 
 }  // namespace
