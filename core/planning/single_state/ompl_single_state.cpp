@@ -21,6 +21,7 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include "core/error.h"
 #include "core/graph/state_validity.h"
 
 namespace demoplan {
@@ -207,6 +208,7 @@ SingleStateResult solve_single_state_ompl(const PlanningProblem& problem, int st
   objective->setCostThreshold(objective->infiniteCost());
   pdef->setOptimizationObjective(objective);
   ob::PlannerPtr p = make_ompl_planner(planner, si);
+  if (!p) throw InputError("planner", planner, "not an OMPL planner demoplan offers");
   p->setProblemDefinition(pdef);
   p->setup();
 
