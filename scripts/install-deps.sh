@@ -11,6 +11,8 @@ PACKAGES=(
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libqt6openglwidgets6
   libgl-dev libegl-dev libgl1-mesa-dri mesa-utils
   libopencv-dev libopencv-contrib-dev ffmpeg
+  # OMPL's planners beside ours (bench-segments); its ompl_benchmark_statistics reads bench --ompl-log
+  libompl-dev ompl-demos
   xvfb xauth
 )
 

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/list_options.h"
 #include "app/cli/task_inputs.h"
 #include "core/demo/benchmark_demonstration.h"
 #include "core/error.h"
@@ -42,33 +43,6 @@ struct BenchOptions {
   std::string out, ompl_log, data_dir;
   bool json = false;
 };
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
-// "0-4" or "1,3,7" or "2".
-std::vector<int> int_range(const std::string& s, const std::string& option) {
-  std::vector<int> out;
-  for (const auto& part : split(s)) {
-    try {
-      const auto dash = part.find('-');
-      if (dash == std::string::npos) {
-        out.push_back(std::stoi(part));
-      } else {
-        const int a = std::stoi(part.substr(0, dash)), b = std::stoi(part.substr(dash + 1));
-        for (int i = a; i <= b; ++i) out.push_back(i);
-      }
-    } catch (const std::exception&) {
-      throw InputError("command line", option, "'" + part + "' is not a number or range like 0-4");
-    }
-  }
-  return out;
-}
 
 struct Run {
   std::string planner;
@@ -138,9 +112,9 @@ int run_bench(const BenchOptions& o) {
   const std::vector<int> poses = int_range(o.poses, "--poses"), seeds = int_range(o.seeds, "--seeds");
   std::map<std::tuple<std::string, std::string, int>, std::unique_ptr<Instance>> instances;
   std::vector<Run> runs;
-  for (const auto& task_name : split(o.tasks)) {
+  for (const auto& task_name : split_list(o.tasks)) {
     const BenchmarkTask task = load_benchmark_task(o.data_dir, task_name);
-    for (const auto& robot : split(o.robots)) {
+    for (const auto& robot : split_list(o.robots)) {
       const std::vector<int> available = benchmark_pose_ids(task, robot);
       for (int pose : poses) {
         if (std::find(available.begin(), available.end(), pose) == available.end()) continue;
@@ -268,7 +242,8 @@ int run_bench(const BenchOptions& o) {
     const std::string stem = o.ompl_log.size() > 4 && o.ompl_log.substr(o.ompl_log.size() - 4) == ".log"
                                  ? o.ompl_log.substr(0, o.ompl_log.size() - 4) : o.ompl_log;
     for (const auto& [key, group] : groups)
-      write_ompl_log(stem + "_" + key.first + "_" + key.second + ".log", key.first + " " + key.second, group,
+      // ompl_benchmark_statistics keeps only the experiment name's last word: no spaces.
+      write_ompl_log(stem + "_" + key.first + "_" + key.second + ".log", key.first + "-" + key.second, group,
                      group.front()->time_limit, total_s);
   }
   if (o.json) std::cout << nlohmann::json{{"rows", rows}}.dump() << std::endl;

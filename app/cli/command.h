@@ -19,6 +19,7 @@ Command register_graph_command(CLI::App& app);
 Command register_plan_command(CLI::App& app);
 Command register_validate_command(CLI::App& app);
 Command register_bench_command(CLI::App& app);
+Command register_bench_segments_command(CLI::App& app);
 Command register_synth_command(CLI::App& app);
 Command register_extract_command(CLI::App& app);
 Command register_evaluate_command(CLI::App& app);

@@ -10,7 +10,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::vector<Command> commands{register_check_command(app), register_graph_command(app),
                                       register_plan_command(app), register_validate_command(app),
-                                      register_bench_command(app), register_synth_command(app),
+                                      register_bench_command(app), register_bench_segments_command(app),
+                                      register_synth_command(app),
                                       register_extract_command(app), register_evaluate_command(app),
                                       register_export_command(app), register_new_command(app)};
   try {

@@ -14,6 +14,18 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using namespace demoplan::testing_support;
 
+// The first line `command` prints on stdout (empty when none or when it fails).
+std::string run_shell(const std::string& command) {
+  std::string out;
+  if (FILE* p = popen((command + " 2>/dev/null").c_str(), "r")) {
+    char buf[4096];
+    while (fgets(buf, sizeof buf, p)) out += buf;
+    pclose(p);
+  }
+  const auto nl = out.find('\n');
+  return nl == std::string::npos ? out : out.substr(0, nl);
+}
+
 class CliPlanning : public ::testing::Test {
 protected:
   static void SetUpTestSuite() { dir_ = make_temp_dir("demoplan_test_cli_planning_"); }
@@ -116,6 +128,68 @@ TEST_F(CliPlanning, BenchPrintsRowsAndWritesOmplLogs) {
   EXPECT_LT(j["rows"][1]["median_path_length_rad"].get<double>(), j["rows"][0]["median_path_length_rad"].get<double>());
   const std::string ompl = read_text(dir_ / "bench_shelf_0_panda.log");
   EXPECT_NE(ompl.find("2 planners"), std::string::npos) << ompl.substr(0, 400);
+}
+
+// OMPL's own reader of benchmark logs (Debian's ompl-demos) takes the log into its SQLite
+// database under the experiment's whole name: it keeps only the last word of a name with spaces,
+// so "shelf_0 panda" and "shelf_1 panda" would merge.
+TEST_F(CliPlanning, OmplBenchmarkStatisticsReadsTheBenchLogUnderItsWholeName) {
+  const std::string script = [] {
+    for (const char* name : {"ompl_benchmark_statistics", "ompl_benchmark_statistics.py"}) {
+      const std::string found = run_shell(std::string("command -v ") + name);
+      if (!found.empty()) return found;
+    }
+    return std::string();
+  }();
+  if (script.empty()) GTEST_SKIP() << "ompl_benchmark_statistics is not installed (Debian: ompl-demos)";
+  const fs::path log = dir_ / "stats.log", db = dir_ / "stats.db";
+  const CliResult r = run({"bench", "--tasks", "shelf_0", "--robots", "panda", "--poses", "1", "--seeds", "1",
+                           "--time-limit", "60", "--ompl-log", log.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const fs::path written = dir_ / "stats_shelf_0_panda.log";
+  ASSERT_TRUE(fs::exists(written));
+  const int status = std::system((shell_quote(script) + " " + shell_quote(written.string()) + " -d " +
+                                  shell_quote(db.string()) + " >/dev/null 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the script failed on " << written;
+  const std::string names = run_shell("python3 -c \"import sqlite3, sys; print(*[r[0] for r in sqlite3.connect(sys.argv[1])"
+                                      ".execute('select name from experiments')])\" " + shell_quote(db.string()));
+  EXPECT_EQ(names, "shelf_0-panda");
+}
+
+// bench-segments: the guided solution of shelf_0 cut into its single-state motions, each solved by
+// our RRT-Connect (and OMPL's when built in) and checked; the table compares median times.
+TEST_F(CliPlanning, BenchSegmentsComparesSingleStatePlanners) {
+  const bool ompl = DEMOPLAN_WITH_OMPL;  // how the CLI was built
+  std::vector<std::string> args{"bench-segments", "--tasks", "shelf_0", "--robots", "panda", "--poses", "1",
+                                "--seeds", "1", "--time-limit", "10", "--json", "--planners",
+                                ompl ? "rrtconnect,ompl-rrtconnect" : "rrtconnect"};
+  const CliResult r = run(args);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = one_object(r);
+  ASSERT_EQ(j["rows"].size(), ompl ? 2u : 1u);
+  ASSERT_GE(j["segments"].size(), 1u);
+  for (const auto& row : j["rows"]) {
+    for (const char* key : {"planner", "runs", "success", "success_rate", "median_time_s", "mean_time_s",
+                            "median_path_length_rad", "median_time_ratio"})
+      EXPECT_TRUE(row.contains(key)) << key;
+    EXPECT_EQ(row["runs"].get<size_t>(), j["segments"].size());
+    EXPECT_EQ(row["success_rate"].get<double>(), 1.0) << row["planner"];
+  }
+  EXPECT_EQ(j["rows"][0]["planner"], "rrtconnect");
+  EXPECT_DOUBLE_EQ(j["rows"][0]["median_time_ratio"].get<double>(), 1.0);
+}
+
+TEST_F(CliPlanning, BenchSegmentsRefusesAnUnknownPlannerNamingTheOption) {
+  const CliResult r = run({"bench-segments", "--tasks", "shelf_0", "--planners", "rrtconnect,ompl-rrt-star"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("--planners"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ompl-rrt-star"), std::string::npos) << r.err;
+  if (!DEMOPLAN_WITH_OMPL) {  // a known OMPL planner in a build without OMPL: says so
+    const CliResult o = run({"bench-segments", "--tasks", "shelf_0", "--planners", "rrtconnect,ompl-rrtconnect"});
+    EXPECT_EQ(o.code, 2);
+    EXPECT_NE(o.err.find("built without it"), std::string::npos) << o.err;
+  }
 }
 
 }  // namespace
