@@ -49,6 +49,11 @@ void draw_bar_chart(Canvas& canvas, const QRectF& area, const BarChart& chart) {
   for (size_t g = 0; g < chart.groups.size(); ++g) {
     const double cx = box.left() + slot * (static_cast<double>(g) + 0.5);
     canvas.text({cx, box.bottom() + 5}, chart.groups[g], group_style);
+    struct Label {
+      QRectF box;  // where the value's text would go
+      QString text;
+    };
+    std::vector<Label> labels;
     for (size_t s = 0; s < chart.series.size(); ++s) {
       const Bar b = g < chart.bars.size() && s < chart.bars[g].size() ? chart.bars[g][s] : Bar{};
       const double x = cx - bar_w * static_cast<double>(series) / 2 + bar_w * static_cast<double>(s);
@@ -72,10 +77,21 @@ void draw_bar_chart(Canvas& canvas, const QRectF& area, const BarChart& chart) {
         canvas.line({cxb - cap, y_hi}, {cxb + cap, y_hi}, whisker);
         label_y = std::min(label_y, y_hi);
       }
-      // The value above the bar, when it fits in the bar's width.
-      const QString text = QString::number(b.value, 'f', chart.decimals);
-      if (Canvas::textSize(text, value_style).width() <= bar_w + 2)
-        canvas.text({slot_rect.center().x(), label_y - 2}, text, value_style);
+      // Large values need no decimals.
+      const int decimals = std::abs(b.value) >= 100 ? 0 : std::abs(b.value) >= 10 ? std::min(chart.decimals, 1) : chart.decimals;
+      const QString text = QString::number(b.value, 'f', decimals);
+      const QSizeF size = Canvas::textSize(text, value_style);
+      labels.push_back({QRectF(slot_rect.center().x() - size.width() / 2, label_y - 2 - size.height(), size.width(),
+                               size.height()), text});
+    }
+    // A value is written above its bar unless it would touch another one: no label at all reads
+    // better than two run together ("9595").
+    for (size_t i = 0; i < labels.size(); ++i) {
+      bool clear = labels[i].box.width() <= bar_w * 1.6;
+      for (size_t k = 0; k < labels.size() && clear; ++k)
+        if (k != i && labels[i].box.adjusted(-2, 0, 2, 0).intersects(labels[k].box)) clear = false;
+      if (clear)
+        canvas.text({labels[i].box.center().x(), labels[i].box.bottom()}, labels[i].text, value_style);
     }
   }
   canvas.line(box.bottomLeft(), box.bottomRight(), Stroke{kAxisColor, 1});

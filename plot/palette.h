@@ -3,11 +3,16 @@
 // colour-blind-safe colours (Okabe-Ito); other names one of the rest by a hash of the name.
 #include <QColor>
 #include <QString>
+#include <vector>
 
 namespace demoplan::plot {
 
 // The colour of a series name, e.g. a planner: "guided+shortcut" is a lighter "guided".
 QColor series_color(const QString& name);
+// The colours of the series shown together: as series_color, except that a name whose hashed
+// colour another base name already has (e.g. "guided (raw)" beside "guided") takes the next free
+// one, so no two planners look alike.
+std::vector<QColor> series_colors(const std::vector<QString>& names);
 // The joint plots' colours: position, velocity, acceleration.
 QColor quantity_color(int quantity);
 

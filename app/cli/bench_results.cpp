@@ -36,6 +36,27 @@ double quantile(std::vector<double> v, double q) {
   return i + 1 < v.size() ? v[i] + (pos - static_cast<double>(i)) * (v[i + 1] - v[i]) : v[i];
 }
 
+// Two rows of the same robot, task and planner as one.
+BenchCell pooled(const BenchCell& a, const BenchCell& b) {
+  if (a.solved == 0 || b.solved == 0) {
+    BenchCell c = a.solved > 0 ? a : b;  // the medians of the part that solved something
+    c.runs = a.runs + b.runs;
+    c.solved = a.solved + b.solved;
+    c.success_rate = c.runs ? static_cast<double>(c.solved) / c.runs : 0.0;
+    return c;
+  }
+  const double wa = a.solved, wb = b.solved;
+  auto mix = [&](double x, double y) { return (wa * x + wb * y) / (wa + wb); };
+  BenchCell c;
+  c.runs = a.runs + b.runs;
+  c.solved = a.solved + b.solved;
+  c.success_rate = c.runs ? static_cast<double>(c.solved) / c.runs : 0.0;
+  c.median_time_s = mix(a.median_time_s, b.median_time_s);
+  c.median_path_length_rad = mix(a.median_path_length_rad, b.median_path_length_rad);
+  c.mean_grasps = mix(a.mean_grasps, b.mean_grasps);
+  return c;
+}
+
 }  // namespace
 
 const BenchCell* BenchResults::find(const std::string& robot, const std::string& task, const std::string& planner) const {
@@ -46,6 +67,8 @@ const BenchCell* BenchResults::find(const std::string& robot, const std::string&
 BenchResults read_bench_results(const std::vector<std::string>& files) {
   BenchResults out;
   out.files = files;
+  // Planning times of the successful runs per (robot, task, planner), for the spread.
+  std::map<std::tuple<std::string, std::string, std::string>, std::vector<double>> times;
   for (const std::string& file : files) {
     const Json doc = read_json_file(file);
     const JsonField root(doc, file);
@@ -62,7 +85,6 @@ BenchResults read_bench_results(const std::vector<std::string>& files) {
       const std::string p = rows[i]["planner"].string();
       if (p.find("+shortcut") == std::string::npos && base_planner.empty()) base_planner = p;
     }
-    std::map<std::tuple<std::string, std::string, std::string>, std::vector<double>> times;
     if (root.has("runs")) {
       const JsonField runs = root["runs"];
       for (size_t i = 0; i < runs.size(); ++i) {
@@ -70,7 +92,7 @@ BenchResults read_bench_results(const std::vector<std::string>& files) {
         const std::string planner = r.has("planner") ? r["planner"].string() : base_planner;
         const bool ok = r["solved"].boolean() && r["valid"].boolean();
         const double t = r["planning_time_s"].number();
-        if (ok) times[{r["robot"].string(), r["task"].string(), planner}].push_back(t);
+        if (ok) times[{r["robot"].string(), r["task"].string(), planner + suffix}].push_back(t);
         ++out.runs;
       }
     }
@@ -85,17 +107,27 @@ BenchResults read_bench_results(const std::vector<std::string>& files) {
       c.median_time_s = number_or_nan(row["median_time_s"]);
       c.median_path_length_rad = number_or_nan(row["median_path_length_rad"]);
       c.mean_grasps = number_or_nan(row["mean_grasps"]);
-      const auto t = times.find({robot, task, planner});
-      c.time_q1_s = t == times.end() ? std::nan("") : quantile(t->second, 0.25);
-      c.time_q3_s = t == times.end() ? std::nan("") : quantile(t->second, 0.75);
+      c.solved = row["solved"].integer();
       const std::string name = planner + suffix;
-      if (out.cells.count({robot, task, name}))
-        out.notes.push_back(file + ": " + task + " " + robot + " " + name + " replaces the one read before");
+      if (auto it = out.cells.find({robot, task, name}); it != out.cells.end()) {
+        // The same instance set run in parts (e.g. the base poses that cannot be done, apart):
+        // pooled. Medians cannot be pooled from rows; when both parts solved something, the
+        // figure shows their mean weighted by solved runs and says so.
+        if (it->second.solved > 0 && c.solved > 0)
+          out.notes.push_back(file + ": rows[" + std::to_string(i) + "]: " + task + " " + robot + " " + name +
+                              " again: its medians are averaged with the earlier row's, weighted by solved runs");
+        c = pooled(it->second, c);
+      }
       out.cells[{robot, task, name}] = c;
       add_ordered(out.robots, robot);
       add_ordered(out.tasks, task);
       add_ordered(out.planners, name);
     }
+  }
+  for (auto& [key, c] : out.cells) {
+    const auto t = times.find(key);
+    c.time_q1_s = t == times.end() ? std::nan("") : quantile(t->second, 0.25);
+    c.time_q3_s = t == times.end() ? std::nan("") : quantile(t->second, 0.75);
   }
   sort_by(out.robots, kRobotOrder);
   sort_by(out.tasks, kTaskOrder);

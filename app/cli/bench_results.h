@@ -14,7 +14,7 @@ struct BenchCell {
   double median_time_s = 0, time_q1_s = 0, time_q3_s = 0;  // NaN when nothing succeeded / no runs
   double median_path_length_rad = 0;
   double mean_grasps = 0;
-  int runs = 0;
+  int runs = 0, solved = 0;
 };
 
 struct BenchResults {
@@ -27,7 +27,9 @@ struct BenchResults {
 };
 
 // Reads demoplan-bench files (version 1). A planner's rows from a file made with another `from`
-// than "subgoals" are named "<planner> (<from>)". Throws InputError naming the file and field.
+// than "subgoals" are named "<planner> (<from>)". Rows of the same robot, task and planner (a
+// benchmark run in parts, in one file or several) are pooled. Throws InputError naming the file
+// and field.
 BenchResults read_bench_results(const std::vector<std::string>& files);
 
 }  // namespace demoplan::cli

@@ -74,13 +74,21 @@ int run_figure(const FigureOptions& o) {
   static int argc = 1;
   static char arg0[] = "demoplan-cli";
   static char* argv[] = {arg0, nullptr};
+  // Qt's remarks (no XDG_RUNTIME_DIR, ...) are not ours to print: stderr is the summary.
+  struct QuietQt {
+    QtMessageHandler previous = qInstallMessageHandler([](QtMsgType type, const QMessageLogContext&, const QString& m) {
+      if (type == QtCriticalMsg || type == QtFatalMsg) std::cerr << m.toStdString() << "\n";
+    });
+    ~QuietQt() { qInstallMessageHandler(previous); }
+  } quiet;
   QGuiApplication app(argc, argv);
 
   std::vector<QString> groups, series;
   for (const auto& t : results.tasks) groups.push_back(QString::fromStdString(t));
   for (const auto& p : results.planners) series.push_back(QString::fromStdString(p));
+  const std::vector<QColor> colors = plot::series_colors(series);
   std::vector<plot::LegendEntry> legend;
-  for (const QString& s : series) legend.push_back({s, plot::series_color(s)});
+  for (size_t i = 0; i < series.size(); ++i) legend.push_back({series[i], colors[i]});
 
   const size_t cols = metrics().size(), rows = results.robots.size();
   const double width = kMargin * 2 + kRowLabelW + kPanelW * static_cast<double>(cols);
@@ -117,6 +125,7 @@ int run_figure(const FigureOptions& o) {
         chart.y_label = metric.unit;
         chart.groups = groups;
         chart.series = series;
+        chart.colors = colors;
         chart.decimals = metric.decimals;
         if (m == 0) chart.y_max = 100;
         for (const auto& task : results.tasks) {
@@ -131,8 +140,9 @@ int run_figure(const FigureOptions& o) {
       }
     }
     c.text({kMargin, height - kMargin / 2}, QStringLiteral(
-               "Success: solved within the time limit and valid by the benchmark's rules. Time and length over the "
-               "successful runs; \"+shortcut\" is the shortened path (time includes shortcutting). – : no data."),
+               "Success: solved within the time limit and valid by the benchmark's rules. Time, length and grasps over "
+               "the successful runs; whiskers: 25–75 % of the planner's own times. \"+shortcut\": the shortened path "
+               "(time includes shortcutting). –: no data."),
            plot::TextStyle{.size = 10, .color = QColor(0x77, 0x77, 0x77), .align = Qt::AlignLeft | Qt::AlignBottom});
   };
   const double scale = 2.0;

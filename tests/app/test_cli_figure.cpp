@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 
 #include "tests/app/cli_runner.h"
 
@@ -98,18 +99,56 @@ TEST_F(CliFigure, SvgHasAPanelPerRobotAndMetric) {
     EXPECT_NE(text.find(s), std::string::npos) << s;
 }
 
-// A planner added later (another file) becomes more bars, with its own colour in the legend.
+// A planner added later (another file) becomes more bars, with its own colour in the legend; the
+// same planner on the raw video estimates is another planner, in another colour.
 TEST_F(CliFigure, PlannersOfEveryFileBecomeBars) {
   write_text(dir_ / "ompl.json", bench_result({"ompl-rrtconnect"}).dump());
-  const CliResult r = run({"figure", (dir_ / "bench.json").string(), (dir_ / "ompl.json").string(), "--out",
-                           (dir_ / "fig.svg").string(), "--json"});
+  Json raw = bench_result({"guided"});
+  raw["from"] = "raw";
+  write_text(dir_ / "raw.json", raw.dump());
+  const CliResult r = run({"figure", (dir_ / "bench.json").string(), (dir_ / "ompl.json").string(),
+                           (dir_ / "raw.json").string(), "--out", (dir_ / "fig.svg").string(), "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const Json j = Json::parse(r.out);
-  EXPECT_EQ(j["planners"], Json({"guided", "guided+shortcut", "ompl-rrtconnect"}));
+  EXPECT_EQ(j["planners"], Json({"guided", "guided+shortcut", "ompl-rrtconnect", "guided (raw)"}));
   const std::string text = read_text(dir_ / "fig.svg");
-  std::smatch m;
-  const std::string legend = text.substr(text.find("<g id=\"legend\">"));
-  EXPECT_EQ(count(legend.substr(0, legend.find("</g>")), std::regex("<rect ")), 3u);  // three swatches
+  const size_t at = text.find("<g id=\"legend\">");
+  ASSERT_NE(at, std::string::npos);
+  const std::string legend = text.substr(at, text.find("</g>", at) - at);
+  std::set<std::string> fills;
+  const std::regex swatch("<rect [^>]*fill=\"(#[0-9a-f]{6})\"");
+  for (auto it = std::sregex_iterator(legend.begin(), legend.end(), swatch); it != std::sregex_iterator(); ++it)
+    fills.insert((*it)[1]);
+  EXPECT_EQ(fills.size(), 4u) << legend;  // four swatches, four colours
+  // Each planner's bars have its legend colour: 2 robots x 2 tasks x 4 metrics bars per planner.
+  for (const std::string& f : fills) EXPECT_GE(count(text, std::regex("fill=\"" + f + "\"")), 1u + 2 * 2 * 3) << f;
+}
+
+// A benchmark run in parts (the base poses that cannot be done apart, as in docs/bench-*.json):
+// rows of the same robot, task and planner are pooled, not replaced.
+TEST_F(CliFigure, RowsRunInPartsArePooled) {
+  Json part = bench_result({"guided"});
+  Json rows = Json::array();
+  for (Json row : part["rows"])
+    if (row["robot"] == "panda" && row["task"] == "shelf_1") {
+      row["solved"] = 0, row["success_rate"] = 0.0, row["median_time_s"] = nullptr;
+      row["median_path_length_rad"] = nullptr, row["mean_grasps"] = nullptr;
+      rows.push_back(row);
+    }
+  part["rows"] = rows;
+  part["runs"] = Json::array();
+  write_text(dir_ / "part.json", part.dump());
+  const CliResult r = run({"figure", (dir_ / "bench.json").string(), (dir_ / "part.json").string(), "--out",
+                           (dir_ / "fig.svg").string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string text = read_text(dir_ / "fig.svg");
+  const size_t panel = text.find("id=\"panel-panda-success_rate\"");
+  const std::string success = text.substr(panel, text.find("</g>", panel) - panel);
+  EXPECT_NE(success.find(">50<"), std::string::npos);  // 4 of 8 runs of shelf_1 with guided
+  EXPECT_NE(success.find(">100<"), std::string::npos);  // tunnel_0 untouched
+  // The times of the part that solved something stay.
+  const size_t time_panel = text.find("id=\"panel-panda-planning_time\"");
+  EXPECT_NE(text.substr(time_panel, text.find("</g>", time_panel) - time_panel).find(">1.50<"), std::string::npos);
 }
 
 TEST_F(CliFigure, PngHasTheReportedSize) {
