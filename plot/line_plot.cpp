@@ -25,10 +25,17 @@ void draw_line_plot(Canvas& canvas, const QRectF& area, const LinePlot& plot) {
     if (std::isfinite(l.y)) y0 = std::min(y0, l.y), y1 = std::max(y1, l.y);
   if (!std::isfinite(x0)) x0 = 0, x1 = 1;
   if (x1 <= x0) x1 = x0 + 1;
-  const Ticks yt = nice_ticks(y0, y1, 4);
+  // A little room above and below, so a limit or a peak is not hidden in the frame; the ticks
+  // stay at round numbers inside.
+  if (!std::isfinite(y0)) y0 = 0, y1 = 1;
+  const double pad = std::max(0.05 * (y1 - y0), 1e-3 * std::max(1.0, std::abs(y1)));
+  y0 -= pad, y1 += pad;
+  Ticks yt = nice_ticks(y0, y1, 4);
+  std::erase_if(yt.values, [&](double v) { return v < y0 - 1e-12 || v > y1 + 1e-12; });
+  yt.min = y0, yt.max = y1;
   const Ticks xt = nice_ticks(x0, x1, 8);
 
-  double tick_w = 0;
+  double tick_w = plot.min_tick_width;
   for (double v : yt.values) tick_w = std::max(tick_w, Canvas::textSize(tick_label(v, yt.step), tick_y).width());
   const double title_h = plot.title.isEmpty() ? 0 : Canvas::textSize(plot.title, title_style).height() + 4;
   const double bottom_h = plot.x_axis_labels ? 18 + (plot.x_label.isEmpty() ? 0 : 16) : 6;

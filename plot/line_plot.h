@@ -31,6 +31,7 @@ struct LinePlot {
   std::vector<LimitLine> limits;
   std::vector<Interval> intervals;
   bool x_axis_labels = true;  // tick labels and title under the plot (off in stacked plots)
+  double min_tick_width = 0;  // px kept for the y tick labels, so plots in a column line up
 };
 
 void draw_line_plot(Canvas& canvas, const QRectF& area, const LinePlot& plot);

@@ -172,7 +172,7 @@ private slots:
     QCOMPARE(view->curveSets(), 7);  // the Panda's arm; the fingers are commanded apart
     for (int r = 0; r < 7; ++r) QCOMPARE(view->jointNames()[size_t(r)], QStringLiteral("panda_joint%1").arg(r + 1));
     const size_t rests = dialog.last().rests;
-    QCOMPARE(rests, size_t(2));  // the swing passes its middle waypoint
+    QCOMPARE(rests, size_t(3));  // the ends, and the middle waypoint where joint 1 turns back
     for (int r = 0; r < 7; ++r)
       for (int k = 0; k < 3; ++k) {
         const plot::LinePlot& p = view->plotAt(r, k);
@@ -217,6 +217,8 @@ private slots:
     const QStringList shown = dialog.preview()->toPlainText().split(QLatin1Char('\n'));
     QVERIFY(shown.size() > 100);
     QCOMPARE(shown.front(), QStringLiteral("{"));
+    QFile text(test::artifactDir() + QStringLiteral("/export_franka_preview.txt"));
+    if (text.open(QIODevice::WriteOnly)) text.write(dialog.preview()->toPlainText().left(4000).toUtf8());
     for (const QString& line : shown) QVERIFY2(line.size() < 400, qPrintable(line.left(80)));
     // The same content.
     QCOMPARE(nlohmann::json::parse(dialog.preview()->toPlainText().toStdString()), nlohmann::json::parse(file));

@@ -12,7 +12,7 @@ namespace demoplan::ui {
 
 namespace {
 
-constexpr int kLegendH = 34, kRowH = 150, kNameW = 22;
+constexpr int kLegendH = 34, kRowH = 140, kNameW = 26;
 
 }  // namespace
 
@@ -37,7 +37,7 @@ void JointPlotView::setTrajectory(const ExportTrajectory& t, const std::vector<Q
   names_.clear();
   message_.clear();
   static const char* kQuantity[3] = {"position", "velocity", "acceleration"};
-  static const char* kSuffix[3] = {"", "/s", "/s²"};
+  static const char* kSuffix[3] = {"", "/s", "/s²"};  // UTF-8
   for (int j : t.joints) {
     const auto slot = static_cast<size_t>(j);
     const QString name = slot < t.limits.names.size() ? QString::fromStdString(t.limits.names[slot])
@@ -46,8 +46,9 @@ void JointPlotView::setTrajectory(const ExportTrajectory& t, const std::vector<Q
     std::array<plot::LinePlot, 3> row;
     for (int k = 0; k < 3; ++k) {
       plot::LinePlot& p = row[static_cast<size_t>(k)];
-      p.title = QStringLiteral("%1 %2 (%3%4)").arg(name, QLatin1String(kQuantity[k]), unit, QLatin1String(kSuffix[k]));
-      p.x_label = QStringLiteral("time (s)");
+      p.min_tick_width = 26;
+      // The joint's name is the row's label; the time axis is named under the last row only.
+      p.title = QStringLiteral("%1 (%2%3)").arg(QLatin1String(kQuantity[k]), unit, QString::fromUtf8(kSuffix[k]));
       plot::Curve c{QLatin1String(kQuantity[k]), plot::quantity_color(k), {}};
       c.points.reserve(t.samples.size());
       for (const TrajectorySample& s : t.samples) {
@@ -72,12 +73,14 @@ void JointPlotView::setTrajectory(const ExportTrajectory& t, const std::vector<Q
     names_.push_back(name);
   }
   if (rows_.empty()) message_ = tr("No joints to plot.");
+  else
+    for (plot::LinePlot& p : rows_.back()) p.x_label = tr("time (s)");
   setMinimumHeight(heightFor());
   update();
 }
 
 int JointPlotView::heightFor() const {
-  return rows_.empty() ? 120 : kLegendH + kRowH * static_cast<int>(rows_.size()) + 8;
+  return rows_.empty() ? 120 : kLegendH + kRowH * static_cast<int>(rows_.size()) + 24;  // + the time axis' name
 }
 
 void JointPlotView::draw(QPainter& painter, int width) const {
@@ -99,9 +102,11 @@ void JointPlotView::draw(QPainter& painter, int width) const {
   for (size_t r = 0; r < rows_.size(); ++r) {
     const double top = kLegendH + kRowH * static_cast<double>(r);
     canvas.text({4, top + kRowH / 2.0}, names_[r],
-                plot::TextStyle{.size = 11, .bold = true, .align = Qt::AlignHCenter | Qt::AlignTop, .vertical = true});
+                plot::TextStyle{.size = 12, .bold = true, .align = Qt::AlignHCenter | Qt::AlignTop, .vertical = true});
+    if (r > 0) canvas.line({4, top - 4}, {width - 4.0, top - 4}, plot::Stroke{plot::kGridColor, 1});
     for (int k = 0; k < 3; ++k)
-      plot::draw_line_plot(canvas, QRectF(kNameW + col_w * k, top, col_w - 6, kRowH - 10), rows_[r][static_cast<size_t>(k)]);
+      plot::draw_line_plot(canvas, QRectF(kNameW + col_w * k, top, col_w - 6, kRowH - 10 + (r + 1 == rows_.size() ? 16 : 0)),
+                           rows_[r][static_cast<size_t>(k)]);
   }
 }
 
