@@ -194,6 +194,10 @@ private slots:
     QImage image = view->render(1100);
     QVERIFY(image.height() > 7 * 100);
     image.save(test::artifactDir() + QStringLiteral("/export_joints.png"));
+    dialog.tabs()->setCurrentIndex(1);
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    dialog.grab().save(test::artifactDir() + QStringLiteral("/export_dialog_joints.png"));
     // Half the velocity: the dashed limits follow.
     dialog.findChildren<QDoubleSpinBox*>().front()->setValue(50);
     QVERIFY(dialog.last().ok);
