@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
                                       register_bench_command(app), register_bench_segments_command(app),
                                       register_synth_command(app),
                                       register_extract_command(app), register_evaluate_command(app),
-                                      register_export_command(app), register_new_command(app)};
+                                      register_export_command(app), register_new_command(app),
+                                      register_figure_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,5 +1,7 @@
 #include "core/export/export_job.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 #include "core/export/program_writers.h"
 #include "core/scene/collision_checker.h"
@@ -61,6 +63,15 @@ ExportReport run_export_job(const Scene& scene, const Path& path, const ExportSe
   std::vector<int> joints = axes.arm;
   joints.insert(joints.end(), axes.base.begin(), axes.base.end());
   r.limits = describe_limits(limits, joints);
+  r.trajectory.joints = joints;
+  r.trajectory.limits = limits;
+  // ~2000 samples: enough for the plot's width, whatever the controller's rate.
+  r.trajectory.samples = tr.sample(std::clamp(2000.0 / std::max(tr.duration, 1e-3), 20.0, 250.0), true);
+  for (size_t i = 0; i < tr.stops.size() && i < tr.waypoint_times.size(); ++i)
+    if (tr.stops[i]) {
+      r.trajectory.rest_times.push_back(tr.waypoint_times[i]);
+      r.trajectory.rest_actions.push_back(i < tr.actions.size() ? tr.actions[i] : GripperAction::None);
+    }
   if (!check.ok) return r;
 
   ProgramOutput program = writer.write({path, tr, limits, model, axes, options}, s.file);

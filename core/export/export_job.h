@@ -9,6 +9,8 @@
 #include "core/export/program_file.h"
 #include "core/path/path.h"
 #include "core/scene/scene.h"
+#include "core/trajectory/joint_limits.h"
+#include "core/trajectory/trajectory.h"
 
 namespace demoplan {
 
@@ -27,6 +29,16 @@ struct ExportSettings {
   std::string file;                 // the program's file: names the module or class; named in errors
 };
 
+// The timed trajectory for display (the export dialog's joint plots): sampled densely enough
+// to show the jerk-limited profile's phases, yet a few thousand samples at most.
+struct ExportTrajectory {
+  std::vector<int> joints;                // exported configuration slots: the arm, then the base
+  std::vector<TrajectorySample> samples;  // every waypoint's time is a sample
+  JointLimitSet limits;                   // per configuration slot, scaled as the export used them
+  std::vector<double> rest_times;         // s: where the robot stands still (ends, grasps, releases)
+  std::vector<GripperAction> rest_actions;  // per rest, what the gripper does there
+};
+
 struct ExportReport {
   size_t waypoints = 0;
   size_t rests = 0;  // waypoints where the robot stands still (ends, grasps, releases, clearance)
@@ -42,6 +54,7 @@ struct ExportReport {
   size_t blends = 0;       // corners passed without stopping, each checked collision-free
   size_t rests_added = 0;  // corners where a blend would touch the scene: the robot rests there
   std::vector<std::string> limits;  // one line per joint group: the limits used
+  ExportTrajectory trajectory;      // also when the check failed: the plots show where
   // From the writer, only when the check passed: the program's files, remarks, streamed samples.
   std::vector<ProgramFile> files;
   std::vector<std::string> warnings;

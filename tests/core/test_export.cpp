@@ -3,6 +3,7 @@
 // gripper actions, in order.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -549,6 +550,40 @@ TEST_F(Export, ExportJobChecksAtTheFormatsRateAndWritesNothing) {
     EXPECT_NE(std::string(e.what()).find("6-axis"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists("arm.script"));
+}
+
+// The report carries the timed trajectory for the dialog's plots: the exported joints, samples
+// from start to end at every waypoint's time, the limits, and the rests with their gripper actions.
+TEST_F(Export, ExportJobReportsTheTrajectoryForPlotting) {
+  const Prepared& p = prepared("shelf_1", "panda");
+  ExportSettings s;
+  s.format = "csv";
+  s.velocity_scale = 0.5;
+  s.file = (dir_ / "job.csv").string();
+  const ExportReport r = run_export_job(p.c.scene, p.c.path, s);
+  ASSERT_TRUE(r.check_ok);
+  const ExportTrajectory& t = r.trajectory;
+  EXPECT_EQ(t.joints, p.axes.arm);  // a fixed arm: no base joints
+  ASSERT_GE(t.samples.size(), 100u);
+  EXPECT_LE(t.samples.size(), 2000u + p.c.path.waypoints.size() + 2);
+  EXPECT_DOUBLE_EQ(t.samples.front().t, 0.0);
+  EXPECT_NEAR(t.samples.back().t, r.duration_s, 1e-9);
+  for (size_t i = 1; i < t.samples.size(); ++i) ASSERT_GT(t.samples[i].t, t.samples[i - 1].t);
+  // The limits are the ones the export used: half the URDF's velocities.
+  EXPECT_NEAR(t.limits.velocity[t.joints[0]], 0.5 * p.limits.velocity[t.joints[0]], 1e-12);
+  EXPECT_EQ(t.rest_times.size(), r.rests);
+  EXPECT_EQ(t.rest_actions.size(), r.rests);
+  EXPECT_DOUBLE_EQ(t.rest_times.front(), 0.0);
+  EXPECT_NEAR(t.rest_times.back(), r.duration_s, 1e-9);
+  // Each sample within the velocity limit; the rests are where the robot stands still.
+  for (const TrajectorySample& x : t.samples)
+    for (int j : t.joints) ASSERT_LE(std::abs(x.v[j]), t.limits.velocity[j] * (1 + 1e-9));
+  const Eigen::VectorXd v_rest = r.trajectory.samples.front().v;
+  EXPECT_LT(v_rest.norm(), 1e-9);
+  size_t grasps = 0;
+  for (GripperAction a : t.rest_actions) grasps += a == GripperAction::Grasp;
+  EXPECT_EQ(grasps, static_cast<size_t>(std::count_if(p.c.path.waypoints.begin(), p.c.path.waypoints.end(),
+                                                      [](const Waypoint& w) { return w.action == GripperAction::Grasp; })));
 }
 
 }  // namespace

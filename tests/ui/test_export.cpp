@@ -2,17 +2,21 @@
 // duration, saves it, and marks the Export step done; a format that does not fit the robot is
 // refused with the reason.
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QDir>
 #include <QFileSystemWatcher>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <nlohmann/json.hpp>
 
 #include "core/export/program_writers.h"
 #include "ui/document/document.h"
 #include "ui/document/program_export.h"
 #include "ui/widgets/export_dialog.h"
+#include "ui/widgets/joint_plot_view.h"
 #include "ui_test_support.h"
 
 using namespace demoplan;
@@ -152,6 +156,76 @@ private slots:
       QVERIFY2(saved.open(QIODevice::ReadOnly), f.name.c_str());
       QCOMPARE(saved.readAll().toStdString(), f.text);
     }
+  }
+
+  // The Joints tab: one row of position, velocity and acceleration plots per arm joint, each
+  // with the limits the program keeps (following the dialog's percentages) and the rests.
+  void jointsViewPlotsEveryArmJoint() {
+    Document doc(test::dataDir().toStdString());
+    doc.open(project_);
+    ExportDialog dialog(&doc, false);
+    QVERIFY2(dialog.last().ok, dialog.last().error.c_str());
+    QCOMPARE(dialog.tabs()->count(), 2);
+    QCOMPARE(dialog.tabs()->tabText(0), QStringLiteral("Program"));
+    QCOMPARE(dialog.tabs()->tabText(1), QStringLiteral("Joints"));
+    const JointPlotView* view = dialog.jointPlot();
+    QCOMPARE(view->curveSets(), 7);  // the Panda's arm; the fingers are commanded apart
+    for (int r = 0; r < 7; ++r) QCOMPARE(view->jointNames()[size_t(r)], QStringLiteral("panda_joint%1").arg(r + 1));
+    const size_t rests = dialog.last().rests;
+    QCOMPARE(rests, size_t(3));  // the ends, and the middle waypoint where joint 1 turns back
+    for (int r = 0; r < 7; ++r)
+      for (int k = 0; k < 3; ++k) {
+        const plot::LinePlot& p = view->plotAt(r, k);
+        QCOMPARE(p.curves.size(), size_t(1));
+        QCOMPARE(p.curves.front().points.size(), dialog.last().trajectory.samples.size());
+        QCOMPARE(p.limits.size(), size_t(2));
+        QCOMPARE(p.intervals.size(), rests);
+      }
+    // Joint 1 swings out by 0.4 rad and back; joint 2 stays.
+    auto range = [&](int row) {
+      double lo = 1e9, hi = -1e9;
+      for (const QPointF& pt : view->plotAt(row, 0).curves.front().points) lo = std::min(lo, pt.y()), hi = std::max(hi, pt.y());
+      return hi - lo;
+    };
+    QVERIFY(std::abs(range(0) - 0.4) < 1e-6);
+    QVERIFY(range(1) < 1e-9);
+    const double v_limit = view->plotAt(0, 1).limits.front().y;
+    QVERIFY(v_limit > 0.5);
+    QImage image = view->render(1100);
+    QVERIFY(image.height() > 7 * 100);
+    image.save(test::artifactDir() + QStringLiteral("/export_joints.png"));
+    dialog.tabs()->setCurrentIndex(1);
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    dialog.grab().save(test::artifactDir() + QStringLiteral("/export_dialog_joints.png"));
+    // Half the velocity: the dashed limits follow.
+    dialog.findChildren<QDoubleSpinBox*>().front()->setValue(50);
+    QVERIFY(dialog.last().ok);
+    QCOMPARE(view->curveSets(), 7);
+    QVERIFY(std::abs(view->plotAt(0, 1).limits.front().y - 0.5 * v_limit) < 1e-9);
+    // No path: a message instead of plots.
+    Document empty(test::dataDir().toStdString());
+    ExportDialog none(&empty, false);
+    QCOMPARE(none.jointPlot()->curveSets(), 0);
+  }
+
+  // Franka's trajectory is one long JSON line; the preview indents it (the file stays as it is).
+  void previewIndentsOneLineJson() {
+    Document doc(test::dataDir().toStdString());
+    doc.open(project_);
+    ExportDialog dialog(&doc, false);
+    QCOMPARE(dialog.formatBox()->currentData().toString(), QStringLiteral("franka"));
+    QVERIFY(dialog.last().ok);
+    const std::string& file = dialog.last().files.front().text;
+    QCOMPARE(std::count(file.begin(), file.end(), '\n'), 1L);
+    const QStringList shown = dialog.preview()->toPlainText().split(QLatin1Char('\n'));
+    QVERIFY(shown.size() > 100);
+    QCOMPARE(shown.front(), QStringLiteral("{"));
+    QFile text(test::artifactDir() + QStringLiteral("/export_franka_preview.txt"));
+    if (text.open(QIODevice::WriteOnly)) text.write(dialog.preview()->toPlainText().left(4000).toUtf8());
+    for (const QString& line : shown) QVERIFY2(line.size() < 400, qPrintable(line.left(80)));
+    // The same content.
+    QCOMPARE(nlohmann::json::parse(dialog.preview()->toPlainText().toStdString()), nlohmann::json::parse(file));
   }
 
   void refusesAFormatThatDoesNotFitTheRobot() {

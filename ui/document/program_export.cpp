@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/export/export_common.h"
+#include "ui/document/json_preview.h"
 
 namespace demoplan::ui {
 
@@ -26,7 +27,7 @@ std::string program_preview_text(const std::vector<ProgramFile>& files) {
   std::string text;
   for (const ProgramFile& f : files) {
     if (files.size() > 1) text += "// ---- " + std::filesystem::path(f.name).filename().string() + "\n";
-    text += f.text;
+    text += f.name.ends_with(".json") ? readable_json(f.text) : f.text;
     if (!text.empty() && text.back() != '\n') text += '\n';
   }
   return text;

@@ -17,7 +17,8 @@ struct ProgramExport : ExportReport {
 ProgramExport run_program_export(const Scene& scene, const Path& path, const std::string& data_dir,
                                  ExportSettings settings);
 
-// The files one after the other, each under a "// ---- NAME" line when there are several.
+// The files one after the other, each under a "// ---- NAME" line when there are several; a JSON
+// file written on one line is shown indented (readable_json).
 std::string program_preview_text(const std::vector<ProgramFile>& files);
 
 }  // namespace demoplan::ui

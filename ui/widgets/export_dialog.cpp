@@ -14,11 +14,14 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSpinBox>
+#include <QTabWidget>
 #include <QVBoxLayout>
 
 #include "core/error.h"
 #include "core/export/program_writers.h"
+#include "ui/widgets/joint_plot_view.h"
 #include "ui/widgets/style.h"
 
 namespace demoplan::ui {
@@ -79,7 +82,18 @@ ExportDialog::ExportDialog(Document* doc, bool interactive, QWidget* parent)
   preview_->setReadOnly(true);
   preview_->setLineWrapMode(QPlainTextEdit::NoWrap);
   preview_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-  layout->addWidget(preview_, 1);
+  // The program as text, and the motion it commands as plots against the limits.
+  tabs_ = new QTabWidget(this);
+  tabs_->addTab(preview_, tr("Program"));
+  joints_ = new JointPlotView;
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(joints_);
+  scroll->setWidgetResizable(true);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  tabs_->addTab(scroll, tr("Joints"));
+  tabs_->setTabToolTip(1, tr("Each joint's position, velocity and acceleration over time, the limits the program "
+                             "keeps (dashed) and where the robot rests (shaded)"));
+  layout->addWidget(tabs_, 1);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
   save_ = buttons->addButton(tr("Save…"), QDialogButtonBox::AcceptRole);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -120,6 +134,7 @@ void ExportDialog::refreshPreview() {
   if (!doc_->hasProject() || !r || !r->path) {
     summary_->setText(tr("No planned path: plan first (F5)."));
     preview_->clear();
+    joints_->setMessage(tr("No planned path: plan first (F5)."));
     save_->setEnabled(false);
     return;
   }
@@ -143,6 +158,18 @@ void ExportDialog::refreshPreview() {
     if (last_.rests_added > 0)
       html += tr("; the robot stops at %n more where passing would touch the scene", nullptr, int(last_.rests_added));
     preview_->setPlainText(QString::fromStdString(program_preview_text(last_.files)));
+  }
+  // The motion also when its check failed: the plots show where it leaves the limits.
+  if (!last_.trajectory.samples.empty()) {
+    std::vector<QString> units;
+    for (const Joint* j : doc_->scene().robot.model.configuration_joints()) {
+      if (j->q_index < 0) continue;
+      if (units.size() <= static_cast<size_t>(j->q_index)) units.resize(static_cast<size_t>(j->q_index) + 1);
+      units[static_cast<size_t>(j->q_index)] = j->type == JointType::Prismatic ? QStringLiteral("m") : QStringLiteral("rad");
+    }
+    joints_->setTrajectory(last_.trajectory, units);
+  } else {
+    joints_->setMessage(QString::fromStdString(last_.error));
   }
   if (!last_.limits.empty()) {
     html += tr("<br><small>Limits used:");

@@ -1,6 +1,7 @@
 #pragma once
 // Export: pick the controller's format (from the registry of program writers), see the program
-// text, its duration and the limits it keeps, and save it. The export job times the path within
+// text (Program tab) and each joint's motion against its limits (Joints tab), its duration and
+// the limits it keeps, and save it. The export job times the path within
 // the robot's joint limits and checks it independently in memory; only Save writes files.
 #include <QDialog>
 
@@ -13,8 +14,11 @@ class QLabel;
 class QPlainTextEdit;
 class QPushButton;
 class QSpinBox;
+class QTabWidget;
 
 namespace demoplan::ui {
+
+class JointPlotView;
 
 class ExportDialog : public QDialog {
   Q_OBJECT
@@ -23,6 +27,8 @@ public:
   QComboBox* formatBox() const { return format_; }
   QPlainTextEdit* preview() const { return preview_; }
   QLabel* summary() const { return summary_; }
+  QTabWidget* tabs() const { return tabs_; }
+  JointPlotView* jointPlot() const { return joints_; }
   const ProgramExport& last() const { return last_; }
   // Writes the program to `file` (asks where when empty and interactive); true when written.
   bool saveTo(const QString& file = QString());
@@ -40,7 +46,9 @@ private:
   QDoubleSpinBox* rate_;
   QSpinBox* output_;
   QLabel* summary_;
+  QTabWidget* tabs_;
   QPlainTextEdit* preview_;
+  JointPlotView* joints_;
   QPushButton* save_;
   ProgramExport last_;
 };
