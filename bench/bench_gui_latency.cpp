@@ -35,6 +35,8 @@ struct Run {
   std::vector<double> gaps_ms;
   double max_paint_ms = 0.0;  // the 3D view's longest frame, GL included
   double worst_at_ms = 0.0;   // when the longest gap ended, from the start of the job
+  double start_call_ms = 0.0;  // Plan pressed: the synchronous part (job set up, 'started' handlers)
+  double press_ms = 0.0;       // the first gap: the press of Plan and its repaint
 };
 
 double percentile(std::vector<double> v, double p) {
@@ -81,7 +83,7 @@ int main(int argc, char** argv) {
   settle.exec();
 
   std::vector<Run> runs;
-  std::vector<double> all_gaps;
+  std::vector<double> all_gaps, all_press;
   for (int seed = first; seed <= last; ++seed) {
     PlannerSettings s = doc->planning()->settings();
     s.planner.seed = static_cast<std::uint64_t>(seed);
@@ -108,7 +110,11 @@ int main(int argc, char** argv) {
     QObject::connect(doc->planning()->runner(), &PlanRunner::finished, &done, &QEventLoop::quit);
     clock.start();
     tick.start();
-    if (!doc->planning()->start()) {
+    QElapsedTimer start_call;
+    start_call.start();
+    const bool started = doc->planning()->start();
+    run.start_call_ms = static_cast<double>(start_call.nsecsElapsed()) / 1e6;
+    if (!started) {
       std::fprintf(stderr, "bench_gui_latency: planning did not start\n");
       return 1;
     }
@@ -117,15 +123,22 @@ int main(int argc, char** argv) {
     const PlanResultData* r = doc->planning()->result();
     run.solved = r && r->summary.solved;
     run.planning_s = r ? r->summary.planning_time_s : 0.0;
-    all_gaps.insert(all_gaps.end(), run.gaps_ms.begin(), run.gaps_ms.end());
+    // The first gap holds the press of Plan itself (the planner dock raised, the panels reset);
+    // the others are the planning proper.
+    if (!run.gaps_ms.empty()) run.press_ms = run.gaps_ms.front();
+    std::vector<double> planning(run.gaps_ms.begin() + (run.gaps_ms.empty() ? 0 : 1), run.gaps_ms.end());
+    all_gaps.insert(all_gaps.end(), planning.begin(), planning.end());
+    all_press.push_back(run.press_ms);
     std::printf("%s %s pose %d seed %d: %s in %.2f s, %d snapshots; GUI thread gaps: max %.1f ms, p99 %.1f ms, "
-                "median %.2f ms over %zu ticks (the longest ending %.0f ms in); longest 3D frame %.1f ms\n",
+                "median %.2f ms over %zu ticks (the longest ending %.0f ms in); Plan itself %.1f ms; longest 3D frame %.1f ms\n",
                 task.c_str(), robot.c_str(), pose, seed, run.solved ? "solved" : "not solved", run.planning_s,
                 run.snapshots, percentile(run.gaps_ms, 1.0), percentile(run.gaps_ms, 0.99),
-                percentile(run.gaps_ms, 0.5), run.gaps_ms.size(), run.worst_at_ms, run.max_paint_ms);
+                percentile(run.gaps_ms, 0.5), run.gaps_ms.size(), run.worst_at_ms, run.start_call_ms, run.max_paint_ms);
     runs.push_back(std::move(run));
   }
-  std::printf("all runs: longest GUI-thread stall %.1f ms, p99 %.1f ms, p999 %.1f ms over %zu ticks\n",
-              percentile(all_gaps, 1.0), percentile(all_gaps, 0.99), percentile(all_gaps, 0.999), all_gaps.size());
+  std::printf("all runs, while planning (after the press of Plan): longest GUI-thread stall %.1f ms, p99 %.1f ms, "
+              "p999 %.1f ms over %zu ticks; the press of Plan itself: longest %.1f ms\n",
+              percentile(all_gaps, 1.0), percentile(all_gaps, 0.99), percentile(all_gaps, 0.999), all_gaps.size(),
+              percentile(all_press, 1.0));
   return 0;
 }
