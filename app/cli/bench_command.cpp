@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/run_statistics.h"
 #include "app/cli/list_options.h"
 #include "app/cli/task_inputs.h"
 #include "core/demo/benchmark_demonstration.h"
@@ -68,14 +69,6 @@ struct Instance {
   std::string infeasible_reason;
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-double mean(const std::vector<double>& v) {
-  return v.empty() ? std::nan("") : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-}
 
 void write_ompl_log(const std::string& file, const std::string& experiment, const std::vector<const Run*>& runs,
                     double time_limit, double total_s) {

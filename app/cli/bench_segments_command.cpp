@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/run_statistics.h"
 #include "app/cli/list_options.h"
 #include "core/demo/benchmark_demonstration.h"
 #include "core/demo/benchmark_scene.h"
@@ -63,14 +64,6 @@ struct SegmentRun {
   std::string message;
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-double mean(const std::vector<double>& v) {
-  return v.empty() ? std::nan("") : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-}
 
 std::vector<std::string> planner_list(const SegmentOptions& o) {
   std::vector<std::string> names = split_list(o.planners);
