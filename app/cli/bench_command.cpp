@@ -40,6 +40,7 @@ struct BenchOptions {
   double waiter_time_limit = 300.0;
   std::string from = "subgoals";
   std::string planner = "guided";
+  std::string compare;  // planners run alternately on the same runs, e.g. "guided,unguided"
   int jobs = 1;
   std::string out, ompl_log, data_dir;
   bool json = false;
@@ -70,8 +71,9 @@ struct Instance {
 };
 
 
-void write_ompl_log(const std::string& file, const std::string& experiment, const std::vector<const Run*>& runs,
-                    double time_limit, double total_s) {
+// One experiment (a task and robot); per planner two OMPL planners, its own path and shortened.
+void write_ompl_log(const std::string& file, const std::string& experiment, const std::vector<std::string>& planners,
+                    const std::vector<const Run*>& all_runs, double time_limit, double total_s) {
   std::ofstream out(file);
   if (!out) throw InputError(file, "", "cannot write the OMPL log");
   char host[256] = "localhost";
@@ -80,11 +82,16 @@ void write_ompl_log(const std::string& file, const std::string& experiment, cons
   out << "demoplan version 0.1.0\nExperiment " << experiment << "\n0 experiment properties\nRunning on " << host
       << "\nStarting at " << std::put_time(std::localtime(&now), "%Y-%m-%d %H:%M:%S")
       << "\n<<<|\nvideo-guided multi-contact RRT on the guided-TAMP benchmark\n|>>>\n<<<|\n|>>>\n"
-      << (runs.empty() ? 0 : runs.front()->seed) << " is the random seed\n"
-      << time_limit << " seconds per run\n0 MB per run\n" << runs.size() << " runs per planner\n"
-      << total_s << " seconds spent to collect the data\n0 enum types\n2 planners\n";
-  for (int planner = 0; planner < 2; ++planner) {
-    out << (planner == 0 ? runs.front()->planner : runs.front()->planner + "+shortcut") << "\n0 common properties\n"
+      << (all_runs.empty() ? 0 : all_runs.front()->seed) << " is the random seed\n"
+      << time_limit << " seconds per run\n0 MB per run\n" << all_runs.size() / planners.size() << " runs per planner\n"
+      << total_s << " seconds spent to collect the data\n0 enum types\n" << 2 * planners.size() << " planners\n";
+  for (int k = 0; k < 2 * static_cast<int>(planners.size()); ++k) {
+    const int planner = k % 2;
+    const std::string& name = planners[static_cast<size_t>(k / 2)];
+    std::vector<const Run*> runs;
+    for (const Run* r : all_runs)
+      if (r->planner == name) runs.push_back(r);
+    out << (planner == 0 ? name : name + "+shortcut") << "\n0 common properties\n"
         << "9 properties for each run\ntime REAL\nsolved BOOLEAN\ncorrect solution BOOLEAN\nsolution length REAL\n"
            "object translation REAL\nobject rotation REAL\ngrasps INTEGER\ngraph states INTEGER\nseed INTEGER\n"
         << runs.size() << " runs\n";
@@ -103,6 +110,7 @@ void write_ompl_log(const std::string& file, const std::string& experiment, cons
 int run_bench(const BenchOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<int> poses = int_range(o.poses, "--poses"), seeds = int_range(o.seeds, "--seeds");
+  const std::vector<std::string> planners = o.compare.empty() ? std::vector<std::string>{o.planner} : split_list(o.compare);
   std::map<std::tuple<std::string, std::string, int>, std::unique_ptr<Instance>> instances;
   std::vector<Run> runs;
   for (const auto& task_name : split_list(o.tasks)) {
@@ -118,11 +126,13 @@ int run_bench(const BenchOptions& o) {
         auto in = std::make_unique<Instance>();
         in->problem = make_planning_problem(scene, demo, std::move(vtask));
         instances[{task_name, robot, pose}] = std::move(in);
-        for (int seed : seeds) {
-          Run& r = runs.emplace_back();
-          r.planner = o.planner, r.task = task_name, r.robot = robot, r.pose = pose, r.seed = seed;
-          r.time_limit = task.task_name == "waiter" ? o.waiter_time_limit : o.time_limit;
-        }
+        // Planners alternate on each seed, so a slow phase of the machine hits them alike.
+        for (int seed : seeds)
+          for (const std::string& planner : planners) {
+            Run& r = runs.emplace_back();
+            r.planner = planner, r.task = task_name, r.robot = robot, r.pose = pose, r.seed = seed;
+            r.time_limit = task.task_name == "waiter" ? o.waiter_time_limit : o.time_limit;
+          }
       }
     }
   }
@@ -140,7 +150,7 @@ int run_bench(const BenchOptions& o) {
       Run& r = runs[i];
       Instance& in = *instances.at({r.task, r.robot, r.pose});
       PlannerSettings settings;
-      settings.planner_name = o.planner;
+      settings.planner_name = r.planner;
       settings.planner.seed = static_cast<std::uint64_t>(r.seed);
       settings.planner.time_limit = r.time_limit;
       const PlanReport s = run_plan_job(in.problem, settings, {}, nullptr, {.assess_on_failure = false});
@@ -166,7 +176,7 @@ int run_bench(const BenchOptions& o) {
       std::lock_guard lock(mutex);
       ++done;
       std::cerr << "[" << done << "/" << runs.size() << "] " << r.task << " " << r.robot << " pose " << r.pose
-                << " seed " << r.seed << ": "
+                << " seed " << r.seed << (planners.size() > 1 ? " " + r.planner : "") << ": "
                 << (r.solved ? (r.raw.valid ? "valid" : "INVALID (" + r.raw.message + ")") : "not solved (" + r.message + ")")
                 << ", " << std::fixed << std::setprecision(2) << r.time_s << " s\n" << std::defaultfloat;
       if (!r.solved && in.infeasible) std::cerr << "    infeasible: " << in.infeasible_reason;
@@ -185,8 +195,15 @@ int run_bench(const BenchOptions& o) {
             << std::right << std::setw(6) << "runs" << std::setw(9) << "feasible" << std::setw(9) << "success"
             << std::setw(10) << "of feas." << std::setw(10) << "median s"
             << std::setw(9) << "mean s" << std::setw(12) << "length rad" << std::setw(8) << "grasps" << "\n";
-  for (const auto& [key, group] : groups) {
-    for (int planner = 0; planner < 2; ++planner) {
+  // Median planning times (own path) per (task, robot, planner), for the ratios.
+  std::map<std::tuple<std::string, std::string, std::string>, double> medians;
+  for (const auto& [key, all_group] : groups) {
+    for (int k = 0; k < 2 * static_cast<int>(planners.size()); ++k) {
+      const int planner = k % 2;
+      const std::string& planner_name = planners[static_cast<size_t>(k / 2)];
+      std::vector<const Run*> group;
+      for (const Run* r : all_group)
+        if (r->planner == planner_name) group.push_back(r);
       std::vector<double> times, lengths, grasps;
       int solved = 0, feasible = 0;
       for (const Run* r : group) {
@@ -198,7 +215,8 @@ int run_bench(const BenchOptions& o) {
         lengths.push_back(v.length.robot);
         grasps.push_back(v.grasps);
       }
-      const std::string name = planner == 0 ? o.planner : o.planner + "+shortcut";
+      const std::string name = planner == 0 ? planner_name : planner_name + "+shortcut";
+      if (planner == 0) medians[{key.first, key.second, planner_name}] = median(times);
       const double rate = static_cast<double>(solved) / static_cast<double>(group.size());
       const double feasible_rate = feasible ? static_cast<double>(solved) / feasible : std::nan("");
       rows.push_back({{"task", key.first}, {"robot", key.second}, {"planner", name},
@@ -219,27 +237,43 @@ int run_bench(const BenchOptions& o) {
                 << cell(median(lengths), 12) << cell(mean(grasps), 8) << "\n";
     }
   }
+  // Each planner against the first: ratio of median planning times where both solved something.
+  nlohmann::json comparisons = nlohmann::json::array();
+  for (size_t p = 1; p < planners.size(); ++p) {
+    std::cerr << "\nmedian planning time, " << planners[p] << " / " << planners[0] << ":\n";
+    for (const auto& [key, group] : groups) {
+      const double a = medians.at({key.first, key.second, planners[0]});
+      const double b = medians.at({key.first, key.second, planners[p]});
+      const double ratio = b / a;  // NaN when either solved nothing
+      comparisons.push_back({{"task", key.first}, {"robot", key.second}, {"planner", planners[p]},
+                             {"baseline", planners[0]}, {"median_time_ratio", std::isnan(ratio) ? nlohmann::json() : nlohmann::json(ratio)}});
+      std::cerr << "  " << std::left << std::setw(10) << key.first << std::setw(10) << key.second << std::right;
+      if (std::isnan(ratio)) std::cerr << "-\n";
+      else std::cerr << std::fixed << std::setprecision(2) << ratio << std::defaultfloat << "\n";
+    }
+  }
   std::cerr << "total " << std::lround(total_s) << " s\n";
   if (!o.out.empty()) {
     nlohmann::json all = nlohmann::json::array();
     for (const Run& r : runs)
-      all.push_back({{"task", r.task}, {"robot", r.robot}, {"pose", r.pose}, {"seed", r.seed}, {"solved", r.solved},
+      all.push_back({{"planner", r.planner}, {"task", r.task}, {"robot", r.robot}, {"pose", r.pose}, {"seed", r.seed}, {"solved", r.solved},
                      {"valid", r.solved && r.raw.valid}, {"message", r.solved ? r.raw.message : r.message},
                      {"feasible", !instances.at({r.task, r.robot, r.pose})->infeasible},
                      {"planning_time_s", r.time_s}, {"iterations", r.iterations}, {"trees", r.trees},
                      {"nodes", r.nodes}, {"path_length_rad", r.raw.length.robot},
                      {"shortened_path_length_rad", r.shortened.length.robot}, {"grasps", r.raw.grasps}});
-    write_json_file_atomic(o.out, {{"format", "demoplan-bench"}, {"version", 1}, {"from", o.from}, {"rows", rows}, {"runs", all}});
+    write_json_file_atomic(o.out, {{"format", "demoplan-bench"}, {"version", 1}, {"from", o.from}, {"rows", rows},
+                                  {"comparisons", comparisons}, {"runs", all}});
   }
   if (!o.ompl_log.empty()) {
     const std::string stem = o.ompl_log.size() > 4 && o.ompl_log.substr(o.ompl_log.size() - 4) == ".log"
                                  ? o.ompl_log.substr(0, o.ompl_log.size() - 4) : o.ompl_log;
     for (const auto& [key, group] : groups)
       // ompl_benchmark_statistics keeps only the experiment name's last word: no spaces.
-      write_ompl_log(stem + "_" + key.first + "_" + key.second + ".log", key.first + "-" + key.second, group,
+      write_ompl_log(stem + "_" + key.first + "_" + key.second + ".log", key.first + "-" + key.second, planners, group,
                      group.front()->time_limit, total_s);
   }
-  if (o.json) std::cout << nlohmann::json{{"rows", rows}}.dump() << std::endl;
+  if (o.json) std::cout << nlohmann::json{{"rows", rows}, {"comparisons", comparisons}}.dump() << std::endl;
   return kOk;
 }
 
@@ -259,6 +293,15 @@ Command register_bench_command(CLI::App& app) {
       ->check(CLI::IsMember({"raw", "subgoals"}))->capture_default_str();
   sub->add_option("--planner", opts->planner, "planner by name")
       ->check(CLI::IsMember(planner_names()))->capture_default_str();
+  sub->add_option("--compare", opts->compare,
+                  "planners run alternately on the same runs and compared, e.g. guided,unguided")
+      ->check([](const std::string& list) {
+        for (const auto& p : split_list(list)) {
+          const auto names = planner_names();
+          if (std::find(names.begin(), names.end(), p) == names.end()) return "unknown planner '" + p + "'";
+        }
+        return std::string();
+      });
   sub->add_option("--jobs", opts->jobs, "runs in parallel")->check(CLI::PositiveNumber)->capture_default_str();
   sub->add_option("--out", opts->out, "write every run and the table as JSON");
   sub->add_option("--ompl-log", opts->ompl_log, "also write OMPL benchmark logs, one per task and robot");

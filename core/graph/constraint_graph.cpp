@@ -18,8 +18,6 @@ Pose gripper_link_T_object(const Scene& scene, int object, int handle) {
   return scene.robot.gripper().pose * h.pose.inverse();
 }
 
-namespace {
-
 bool same_placements(const std::vector<ObjectPlacement>& a, const std::vector<ObjectPlacement>& b,
                      const GraphOptions& o) {
   for (size_t i = 0; i < a.size(); ++i) {
@@ -29,6 +27,8 @@ bool same_placements(const std::vector<ObjectPlacement>& a, const std::vector<Ob
   }
   return true;
 }
+
+namespace {
 
 // Movable joints in the subtree of the gripper link: the fingers.
 std::vector<int> gripper_joint_slots(const RobotModel& m, int gripper_link) {

@@ -77,6 +77,10 @@ struct GraphOptions {
   double same_rotation = 1e-3;  // rad
 };
 
+// Whether every object rests at the same place in both (within the options' tolerances).
+bool same_placements(const std::vector<ObjectPlacement>& a, const std::vector<ObjectPlacement>& b,
+                     const GraphOptions& options = {});
+
 // Builds the graph for the scene's robot. The demonstration's objects must be the scene's
 // objects in the same order. Throws InputError naming the rule when the demonstration is invalid.
 ConstraintGraph build_constraint_graph(const Scene& scene, const Demonstration& demo,

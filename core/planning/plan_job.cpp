@@ -23,7 +23,9 @@ PlanReport run_plan_job(const PlanningProblem& problem, const PlannerSettings& s
       Path shorter = r.plan.path;
       ShortcutParams sp = settings.shortcutting;
       sp.seed = settings.planner.seed;
-      r.shortcut = shortcut_path(*problem.scene, *problem.graph, *problem.checker, shorter, sp);
+      // The unguided planner's path lies in states of its own graph.
+      const ConstraintGraph& graph = r.plan.graph ? *r.plan.graph : *problem.graph;
+      r.shortcut = shortcut_path(*problem.scene, graph, *problem.checker, shorter, sp);
       ValidationReport v = validate_path(*problem.scene, problem.validation, shorter);
       if (v.valid) {
         r.path = std::move(shorter);

@@ -3,6 +3,7 @@
 // or the StopCondition says stop, reporting progress on the way. The guided planner is one
 // implementation (guided_planner.h); planner_registry.h finds them by name.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,8 @@ struct PlannerProgress {
   size_t nodes = 0;
   std::vector<size_t> tree_nodes;      // per current tree
   std::vector<size_t> state_nodes;     // per graph state
+  // The names of those states when the planner makes its own (unguided); empty: the problem's.
+  std::vector<std::string> state_names;
   int rejected_paths = 0;  // found paths the final check rejected (see PlannerParams::final_check)
   std::vector<EdgeSnapshot> new_edges; // since the previous snapshot
   std::vector<std::pair<int, Eigen::VectorXd>> new_roots;  // (state, q) of new transition trees
@@ -79,6 +82,9 @@ struct PlanResult {
   int rejected_paths = 0;  // found paths the final check rejected (see PlannerParams::final_check)
   // Transitions never sampled collision-free: for "which transition could not be sampled".
   std::vector<std::string> unsampled_transitions;
+  // The graph whose states path.waypoints[k].state indexes when the planner made its own (the
+  // unguided planner discovers its placements); null: the problem's.
+  std::shared_ptr<const ConstraintGraph> graph;
 };
 
 class Planner {

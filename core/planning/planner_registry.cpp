@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/planning/guided_planner.h"
+#include "core/planning/unguided_planner.h"
 
 namespace demoplan {
 
@@ -9,6 +10,8 @@ const std::vector<PlannerEntry>& registered_planners() {
   static const std::vector<PlannerEntry> planners{
       {"guided", "multi-tree RRT with trees rooted at the demonstration's transitions (Alg. 1-2)",
        [](const PlannerSettings& s) { return std::make_unique<GuidedPlanner>(s.planner); }},
+      {"unguided", "M-RRT as HPP searches: start and goal placements only, parts released anywhere on a support",
+       [](const PlannerSettings& s) { return std::make_unique<UnguidedPlanner>(s.planner); }},
   };
   return planners;
 }

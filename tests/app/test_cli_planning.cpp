@@ -143,8 +143,9 @@ TEST_F(CliPlanning, OmplBenchmarkStatisticsReadsTheBenchLogUnderItsWholeName) {
   }();
   if (script.empty()) GTEST_SKIP() << "ompl_benchmark_statistics is not installed (Debian: ompl-demos)";
   const fs::path log = dir_ / "stats.log", db = dir_ / "stats.db";
+  // Two planners compared: four OMPL planners (each with its shortened variant) in one experiment.
   const CliResult r = run({"bench", "--tasks", "shelf_0", "--robots", "panda", "--poses", "1", "--seeds", "1",
-                           "--time-limit", "60", "--ompl-log", log.string()});
+                           "--time-limit", "60", "--compare", "guided,unguided", "--ompl-log", log.string()});
   ASSERT_EQ(r.code, 0) << r.err;
   const fs::path written = dir_ / "stats_shelf_0_panda.log";
   ASSERT_TRUE(fs::exists(written));
@@ -154,6 +155,36 @@ TEST_F(CliPlanning, OmplBenchmarkStatisticsReadsTheBenchLogUnderItsWholeName) {
   const std::string names = run_shell("python3 -c \"import sqlite3, sys; print(*[r[0] for r in sqlite3.connect(sys.argv[1])"
                                       ".execute('select name from experiments')])\" " + shell_quote(db.string()));
   EXPECT_EQ(names, "shelf_0-panda");
+  const std::string planners = run_shell("python3 -c \"import sqlite3, sys; print(*sorted(r[0] for r in sqlite3.connect(sys.argv[1])"
+                                         ".execute('select name from plannerConfigs')))\" " + shell_quote(db.string()));
+  EXPECT_EQ(planners, "guided guided+shortcut unguided unguided+shortcut");
+}
+
+// bench --compare: the planners run alternately on the same seeds; every run names its planner
+// and the ratio of median planning times is printed and written.
+TEST_F(CliPlanning, BenchComparesGuidedAndUnguidedOnTheSameRuns) {
+  const fs::path out = dir_ / "compare.json";
+  const CliResult r = run({"bench", "--tasks", "shelf_0", "--robots", "panda", "--poses", "1", "--seeds", "1-2",
+                           "--time-limit", "60", "--compare", "guided,unguided", "--out", out.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = Json::parse(read_text(out));
+  ASSERT_EQ(j["runs"].size(), 4u);
+  std::vector<std::string> order;
+  for (const auto& run : j["runs"]) {
+    order.push_back(run["planner"].get<std::string>() + std::to_string(run["seed"].get<int>()));
+    EXPECT_TRUE(run["valid"].get<bool>()) << run.dump();
+  }
+  EXPECT_EQ(order, (std::vector<std::string>{"guided1", "unguided1", "guided2", "unguided2"}));
+  ASSERT_EQ(j["rows"].size(), 4u);
+  ASSERT_EQ(j["comparisons"].size(), 1u);
+  const double ratio = j["comparisons"][0]["median_time_ratio"].get<double>();
+  double guided = 0, unguided = 0;
+  for (const auto& row : j["rows"]) {
+    if (row["planner"] == "guided") guided = row["median_time_s"].get<double>();
+    if (row["planner"] == "unguided") unguided = row["median_time_s"].get<double>();
+  }
+  EXPECT_NEAR(ratio, unguided / guided, 1e-9);
+  EXPECT_NE(r.err.find("median planning time, unguided / guided"), std::string::npos) << r.err;
 }
 
 // bench-segments: the guided solution of shelf_0 cut into its single-state motions, each solved by

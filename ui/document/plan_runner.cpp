@@ -71,6 +71,7 @@ bool PlanRunner::start(PlanJob job) {
         snap->trees = p.trees;
         snap->nodes = p.nodes;
         snap->state_nodes = p.state_nodes;
+        snap->state_names = p.state_names;
         snap->final = p.final;
         snap->new_edges.reserve(p.new_edges.size());
         for (const EdgeSnapshot& e : p.new_edges)

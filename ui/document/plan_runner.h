@@ -44,6 +44,7 @@ struct PlanSnapshot {
   int trees = 0;
   size_t nodes = 0;
   std::vector<size_t> state_nodes;
+  std::vector<std::string> state_names;  // a planner's own states (unguided); empty: the graph's
   std::vector<TreeEdge> new_edges;
   std::vector<TreeRoot> new_roots;
   bool final = false;

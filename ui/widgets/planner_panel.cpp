@@ -276,7 +276,8 @@ void PlannerPanel::onProgress(const PlanSnapshot& s) {
                       .arg(s.iterations)
                       .arg(s.trees)
                       .arg(qulonglong(s.nodes)));
-  if (!state_names_.empty()) showStates(state_names_, s.state_nodes);
+  if (!s.state_names.empty()) showStates(s.state_names, s.state_nodes);
+  else if (!state_names_.empty()) showStates(state_names_, s.state_nodes);
 }
 
 void PlannerPanel::onResult() {
