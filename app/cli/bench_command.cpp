@@ -113,13 +113,14 @@ int run_bench(const BenchOptions& o) {
   const std::vector<std::string> planners = o.compare.empty() ? std::vector<std::string>{o.planner} : split_list(o.compare);
   std::map<std::tuple<std::string, std::string, int>, std::unique_ptr<Instance>> instances;
   std::vector<Run> runs;
+  MeshCache meshes;  // every instance of a robot or task loads the same mesh files
   for (const auto& task_name : split_list(o.tasks)) {
     const BenchmarkTask task = load_benchmark_task(o.data_dir, task_name);
     for (const auto& robot : split_list(o.robots)) {
       const std::vector<int> available = benchmark_pose_ids(task, robot);
       for (int pose : poses) {
         if (std::find(available.begin(), available.end(), pose) == available.end()) continue;
-        auto scene = std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose));
+        auto scene = std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose, {.mesh_cache = &meshes}));
         const Demonstration demo = place_on_deck(*scene, demonstration_from_benchmark(
             task, *scene, o.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals)).demonstration;
         ValidationTask vtask = o.from == "raw" ? validation_task(demo, *scene) : validation_task(task, *scene);

@@ -89,13 +89,14 @@ int run_bench_segments(const SegmentOptions& o) {
   const std::vector<int> poses = int_range(o.poses, "--poses"), seeds = int_range(o.seeds, "--seeds");
   std::vector<Segment> segments;
   int straight = 0, unsolved_instances = 0;
+  MeshCache meshes;  // every instance of a robot or task loads the same mesh files
   for (const auto& task_name : split_list(o.tasks)) {
     const BenchmarkTask task = load_benchmark_task(o.data_dir, task_name);
     for (const auto& robot : split_list(o.robots)) {
       const std::vector<int> available = benchmark_pose_ids(task, robot);
       for (int pose : poses) {
         if (std::find(available.begin(), available.end(), pose) == available.end()) continue;
-        auto scene = std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose));
+        auto scene = std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose, {.mesh_cache = &meshes}));
         const Demonstration demo =
             place_on_deck(*scene, demonstration_from_benchmark(task, *scene, PoseSource::Subgoals)).demonstration;
         auto problem = std::make_shared<const PlanningProblem>(

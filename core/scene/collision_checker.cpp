@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <set>
 
 #include "core/error.h"
+#include "core/scene/bvh_cache.h"
 
 namespace demoplan {
 
@@ -48,33 +48,21 @@ struct GeomInfo {
   std::string name;
   bool world_fixed = false;    // robot geometry on the root of a fixed-base robot
   bool robot_ignored = false;  // furniture geometry the robot never collides with
-  std::shared_ptr<fcl::CollisionGeometryd> geometry;
+  std::shared_ptr<const CollisionObjectd> prototype;  // at the identity; copied, never placed
 };
 
-using MeshKey = std::pair<const TriangleMesh*, std::tuple<double, double, double>>;
-
-std::shared_ptr<fcl::CollisionGeometryd> make_fcl_geometry(
-    const Geometry& g, std::map<MeshKey, std::shared_ptr<fcl::CollisionGeometryd>>& meshes) {
-  if (auto* b = std::get_if<BoxShape>(&g.shape)) return std::make_shared<fcl::Boxd>(b->size);
+// An object at the identity to copy (see bvh_cache.h). Meshes come fitted from the process-wide
+// cache; primitives are cheap and belong to this checker.
+std::shared_ptr<const CollisionObjectd> make_prototype(const Geometry& g) {
+  auto own = [](std::shared_ptr<fcl::CollisionGeometryd> geometry) {
+    return std::make_shared<const CollisionObjectd>(std::move(geometry));
+  };
+  if (auto* b = std::get_if<BoxShape>(&g.shape)) return own(std::make_shared<fcl::Boxd>(b->size));
   if (auto* c = std::get_if<CylinderShape>(&g.shape))
-    return std::make_shared<fcl::Cylinderd>(c->radius, c->length);
-  if (auto* s = std::get_if<SphereShape>(&g.shape)) return std::make_shared<fcl::Sphered>(s->radius);
+    return own(std::make_shared<fcl::Cylinderd>(c->radius, c->length));
+  if (auto* s = std::get_if<SphereShape>(&g.shape)) return own(std::make_shared<fcl::Sphered>(s->radius));
   const auto& m = std::get<MeshShape>(g.shape);
-  const MeshKey key{m.mesh.get(), {m.scale.x(), m.scale.y(), m.scale.z()}};
-  if (auto it = meshes.find(key); it != meshes.end()) return it->second;
-  std::vector<fcl::Vector3d> vertices;
-  vertices.reserve(m.mesh->vertices.size());
-  for (const auto& v : m.mesh->vertices) vertices.push_back(v.cast<double>().cwiseProduct(m.scale));
-  std::vector<fcl::Triangle> triangles;
-  triangles.reserve(m.mesh->triangles.size());
-  for (const auto& t : m.mesh->triangles) triangles.emplace_back(t[0], t[1], t[2]);
-  auto bvh = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-  bvh->beginModel(static_cast<int>(triangles.size()), static_cast<int>(vertices.size()));
-  bvh->addSubModel(vertices, triangles);
-  bvh->endModel();
-  bvh->computeLocalAABB();
-  meshes.emplace(key, bvh);
-  return bvh;
+  return shared_mesh_bvh(*m.mesh, m.scale);
 }
 
 }  // namespace collision_detail
@@ -256,9 +244,8 @@ struct CollisionChecker::Impl {
 
 CollisionChecker::CollisionChecker(const Scene& scene, CollisionOptions options)
     : scene_(scene), impl_(std::make_unique<Impl>()) {
-  std::map<MeshKey, std::shared_ptr<fcl::CollisionGeometryd>> meshes;
   auto add = [&](std::vector<GeomInfo>& list, GeomInfo info, const Geometry& g) {
-    info.geometry = make_fcl_geometry(g, meshes);
+    info.prototype = make_prototype(g);
     list.push_back(std::move(info));
   };
 
@@ -335,7 +322,8 @@ CollisionChecker::CollisionChecker(const Scene& scene, CollisionOptions options)
   }
   // Pointers into impl_->furniture stay valid: the vector is complete now.
   for (auto& info : impl_->furniture) {
-    auto obj = std::make_unique<CollisionObjectd>(info.geometry, info.local);
+    auto obj = std::make_unique<CollisionObjectd>(*info.prototype);
+    obj->setTransform(info.local);
     obj->setUserData(&info);
     obj->computeAABB();
     impl_->furniture_objects.push_back(std::move(obj));
@@ -345,10 +333,10 @@ CollisionChecker::CollisionChecker(const Scene& scene, CollisionOptions options)
   impl_->world.registerObjects(raw);
   impl_->world.setup();
 
-  // Prototypes copied into each CollisionData (copying does not touch the shared geometry,
-  // unlike constructing, which recomputes its local AABB: keep that single-threaded).
-  for (auto& info : impl_->robot) impl_->robot_proto.emplace_back(info.geometry);
-  for (auto& info : impl_->objects) impl_->object_proto.emplace_back(info.geometry);
+  // Copied into each CollisionData (copying does not touch the shared geometry, unlike
+  // constructing, which recomputes its local AABB).
+  for (auto& info : impl_->robot) impl_->robot_proto.push_back(*info.prototype);
+  for (auto& info : impl_->objects) impl_->object_proto.push_back(*info.prototype);
 }
 
 CollisionChecker::~CollisionChecker() = default;

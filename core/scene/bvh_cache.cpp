@@ -1,0 +1,152 @@
+#include "core/scene/bvh_cache.h"
+
+#include <fcl/fcl.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <future>
+#include <mutex>
+#include <unordered_map>
+#include <vector>
+
+namespace demoplan {
+
+namespace {
+
+using Bvh = fcl::BVHModel<fcl::OBBRSSd>;
+using SharedObject = std::shared_ptr<const fcl::CollisionObjectd>;
+
+// What is fitted: the mesh with its scale applied.
+struct FitInput {
+  std::vector<fcl::Vector3d> vertices;
+  std::vector<fcl::Triangle> triangles;
+};
+
+FitInput scaled(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
+  FitInput in;
+  in.vertices.reserve(mesh.vertices.size());
+  for (const auto& v : mesh.vertices) in.vertices.push_back(v.cast<double>().cwiseProduct(scale));
+  in.triangles.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) in.triangles.emplace_back(t[0], t[1], t[2]);
+  return in;
+}
+
+std::uint64_t content_hash(const FitInput& in) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  auto mix = [&h](std::uint64_t w) {
+    h ^= w + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    h *= 0x100000001b3ull;
+  };
+  mix(in.vertices.size());
+  mix(in.triangles.size());
+  for (const auto& v : in.vertices)
+    for (int i = 0; i < 3; ++i) mix(std::bit_cast<std::uint64_t>(v[i]));
+  for (const auto& t : in.triangles)
+    for (int i = 0; i < 3; ++i) mix(t[i]);
+  return h;
+}
+
+// Bit for bit, like the hash: the hash only finds candidates, this decides.
+bool fitted_from(const fcl::CollisionObjectd& object, const FitInput& in) {
+  const auto& bvh = static_cast<const Bvh&>(*object.collisionGeometry());
+  if (bvh.num_vertices != static_cast<int>(in.vertices.size()) ||
+      bvh.num_tris != static_cast<int>(in.triangles.size()))
+    return false;
+  static_assert(sizeof(fcl::Vector3d) == 3 * sizeof(double));
+  if (!in.vertices.empty() &&
+      std::memcmp(bvh.vertices, in.vertices.data(), in.vertices.size() * sizeof(fcl::Vector3d)) != 0)
+    return false;
+  for (size_t i = 0; i < in.triangles.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (bvh.tri_indices[i][k] != in.triangles[i][k]) return false;
+  return true;
+}
+
+std::atomic<std::size_t> fit_count{0};
+
+SharedObject fit(const FitInput& in) {
+  auto bvh = std::make_shared<Bvh>();
+  bvh->beginModel(static_cast<int>(in.triangles.size()), static_cast<int>(in.vertices.size()));
+  bvh->addSubModel(in.vertices, in.triangles);
+  bvh->endModel();
+  // The constructor computes the geometry's local AABB: here, before any other thread sees it.
+  auto object = std::make_shared<const fcl::CollisionObjectd>(bvh);
+  ++fit_count;
+  return object;
+}
+
+struct Entry {
+  std::shared_future<SharedObject> object;  // ready once fitted; others wait on it
+};
+
+struct Cache {
+  std::mutex mutex;
+  std::unordered_multimap<std::uint64_t, std::shared_ptr<Entry>> entries;  // by content_hash
+};
+
+Cache& cache() {
+  static Cache c;
+  return c;
+}
+
+SharedObject find_or_fit(const FitInput& in, std::uint64_t hash) {
+  Cache& c = cache();
+  std::vector<std::shared_ptr<Entry>> candidates;
+  {
+    std::lock_guard lock(c.mutex);
+    auto [begin, end] = c.entries.equal_range(hash);
+    for (auto it = begin; it != end; ++it) candidates.push_back(it->second);
+  }
+  // Outside the lock: a candidate may still be fitting in another thread.
+  for (const auto& e : candidates) {
+    SharedObject o = e->object.get();
+    if (fitted_from(*o, in)) return o;
+  }
+
+  std::promise<SharedObject> promise;
+  const auto mine = std::make_shared<Entry>(Entry{promise.get_future().share()});
+  bool entered_meanwhile = false;
+  {
+    std::lock_guard lock(c.mutex);
+    auto [begin, end] = c.entries.equal_range(hash);
+    for (auto it = begin; it != end; ++it)
+      entered_meanwhile |= std::find(candidates.begin(), candidates.end(), it->second) == candidates.end();
+    if (!entered_meanwhile) c.entries.emplace(hash, mine);
+  }
+  // Another thread entered this hash since the look-up: it may be this mesh, so wait for it
+  // rather than fit twice.
+  if (entered_meanwhile) return find_or_fit(in, hash);
+
+  try {
+    SharedObject o = fit(in);
+    promise.set_value(o);
+    return o;
+  } catch (...) {
+    {
+      std::lock_guard lock(c.mutex);
+      auto [begin, end] = c.entries.equal_range(hash);
+      for (auto it = begin; it != end; ++it)
+        if (it->second == mine) {
+          c.entries.erase(it);
+          break;
+        }
+    }
+    promise.set_exception(std::current_exception());
+    throw;
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<const fcl::CollisionObjectd> shared_mesh_bvh(const TriangleMesh& mesh,
+                                                             const Eigen::Vector3d& scale) {
+  const FitInput in = scaled(mesh, scale);
+  return find_or_fit(in, content_hash(in));
+}
+
+std::size_t bvh_fits() { return fit_count.load(); }
+
+}  // namespace demoplan

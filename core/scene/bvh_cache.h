@@ -1,0 +1,35 @@
+#pragma once
+// Process-wide cache of fitted FCL mesh BVHs (OBBRSS).
+//
+// Fitting a BVH is the costly part of building a CollisionChecker, and a process builds many
+// checkers of the same meshes: planner, validator, every reload of a scene. Each distinct mesh
+// is therefore fitted once per process and shared, immutable, by every checker and thread (as
+// Pinocchio shares its Model). The key is the mesh's content with the scale applied (vertices
+// bit for bit, triangles), not its file or its TriangleMesh object: a scene loaded a second time
+// hits the cache, a mesh without a path works, and an edited file is fitted anew.
+// Entries are kept for the life of the process; a process uses a bounded set of robot, object
+// and furniture meshes.
+#include <Eigen/Core>
+#include <cstddef>
+#include <memory>
+
+#include "core/model/mesh.h"
+
+namespace fcl {
+template <typename S>
+class CollisionObject;
+}  // namespace fcl
+
+namespace demoplan {
+
+// A collision object at the identity holding the mesh's shared BVH. Copy it and set the copy's
+// transform: copying leaves the geometry untouched, whereas constructing an fcl::CollisionObject
+// rewrites the geometry's local AABB, a write that would race with other threads' queries.
+// Thread-safe; concurrent requests for the same mesh wait for one fit.
+std::shared_ptr<const fcl::CollisionObject<double>> shared_mesh_bvh(const TriangleMesh& mesh,
+                                                                    const Eigen::Vector3d& scale);
+
+// Number of BVHs fitted in this process so far.
+std::size_t bvh_fits();
+
+}  // namespace demoplan
