@@ -39,7 +39,7 @@ std::optional<std::vector<Eigen::VectorXd>> connect_in_state(const ConstraintPro
                                                               int state, const Eigen::VectorXd& a,
                                                               const Eigen::VectorXd& b, std::mt19937_64& rng,
                                                               const ConnectParams& params) {
-  if (validity.segment_free(state, a, b, data)) return std::vector<Eigen::VectorXd>{};
+  if (params.straight_first && validity.segment_free(state, a, b, data)) return std::vector<Eigen::VectorXd>{};
   Tree ta, tb;
   ta.add(a, -1);
   tb.add(b, -1);

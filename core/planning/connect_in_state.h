@@ -13,6 +13,9 @@ namespace demoplan {
 
 struct ConnectParams {
   double step = 0.3;  // rad: extension step, as the guided planner's delta
+  // Try the straight move a-b before growing trees: right for joining the ends of a put-back
+  // detour, where it is often free; wasted where the caller knows it is blocked.
+  bool straight_first = true;
   std::chrono::steady_clock::time_point deadline;
 };
 

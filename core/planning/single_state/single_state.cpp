@@ -53,6 +53,7 @@ SingleStateResult solve_ours(const PlanningProblem& problem, int state, const Ei
   }
   std::mt19937_64 rng(seed);
   ConnectParams params;  // its step is the guided planner's delta, as OMPL's range is set to
+  params.straight_first = false;  // plain RRT-Connect, as OMPL's: the trees find a free straight move
   // connect_in_state polls a deadline, not the StopCondition: the same limit from now.
   const double limit = std::min(stop.time_limit_s(), 1e6);
   const auto t0 = std::chrono::steady_clock::now();
