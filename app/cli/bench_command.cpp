@@ -23,7 +23,7 @@
 #include "core/demo/benchmark_demonstration.h"
 #include "core/error.h"
 #include "core/io/json_file.h"
-#include "core/placement/deck_placement.h"
+#include "core/project/benchmark_instance.h"
 #include "core/planning/plan_job.h"
 #include "core/planning/planner_registry.h"
 
@@ -121,11 +121,9 @@ int run_bench(const BenchOptions& o) {
       for (int pose : poses) {
         if (std::find(available.begin(), available.end(), pose) == available.end()) continue;
         auto scene = std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose, {.mesh_cache = &meshes}));
-        const Demonstration demo = place_on_deck(*scene, demonstration_from_benchmark(
-            task, *scene, o.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals)).demonstration;
-        ValidationTask vtask = o.from == "raw" ? validation_task(demo, *scene) : validation_task(task, *scene);
         auto in = std::make_unique<Instance>();
-        in->problem = make_planning_problem(scene, demo, std::move(vtask));
+        in->problem =
+            make_benchmark_instance(task, scene, o.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals).problem;
         instances[{task_name, robot, pose}] = std::move(in);
         // Planners alternate on each seed, so a slow phase of the machine hits them alike.
         for (int seed : seeds)

@@ -23,7 +23,7 @@
 #include "core/graph/state_validity.h"
 #include "core/io/json_file.h"
 #include "core/path/state_runs.h"
-#include "core/placement/deck_placement.h"
+#include "core/project/benchmark_instance.h"
 #include "core/planning/plan_job.h"
 #include "core/planning/single_state/single_state.h"
 #include "core/planning/single_state/single_state_check.h"
@@ -97,10 +97,8 @@ int run_bench_segments(const SegmentOptions& o) {
       for (int pose : poses) {
         if (std::find(available.begin(), available.end(), pose) == available.end()) continue;
         auto scene = std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose, {.mesh_cache = &meshes}));
-        const Demonstration demo =
-            place_on_deck(*scene, demonstration_from_benchmark(task, *scene, PoseSource::Subgoals)).demonstration;
         auto problem = std::make_shared<const PlanningProblem>(
-            make_planning_problem(scene, demo, validation_task(task, *scene)));
+            make_benchmark_instance(task, scene, PoseSource::Subgoals).problem);
         PlannerSettings settings;
         settings.planner.seed = 1;
         settings.planner.time_limit = o.plan_time_limit;

@@ -25,9 +25,8 @@ struct GraphOptions {
 
 int run_graph(const GraphOptions& o) {
   const LoadedTask t = load_task_inputs(o.inputs);
-  const ConstraintGraph graph = build_constraint_graph(t.scene, t.demo);
-  const CollisionChecker checker(t.scene);
-  const FeasibilityReport report = assess_picks(t.scene, graph, checker, o.samples, o.seed);
+  const ConstraintGraph& graph = *t.instance.problem.graph;
+  const FeasibilityReport report = assess_picks(t.scene(), graph, *t.instance.problem.checker, o.samples, o.seed);
   const auto& stats = report.transitions;
   int total_projected = 0, total_free = 0;
   for (const auto& st : stats) total_projected += st.projected, total_free += st.collision_free;
@@ -39,8 +38,8 @@ int run_graph(const GraphOptions& o) {
   nlohmann::json deviation;
   if (o.inputs.from == "raw") {
     // How far the poses estimated from the video lie from the cleaned ones.
-    const Demonstration clean = demonstration_from_benchmark(t.task, t.scene, PoseSource::Subgoals);
-    const PoseDeviation d = pose_deviation(t.demo, clean);
+    const Demonstration clean = demonstration_from_benchmark(t.task, t.scene(), PoseSource::Subgoals);
+    const PoseDeviation d = pose_deviation(t.demo(), clean);
     deviation = {{"pairs", d.pairs},
                  {"median_translation_mm", d.median_translation_mm},
                  {"max_translation_mm", d.max_translation_mm},
@@ -50,8 +49,8 @@ int run_graph(const GraphOptions& o) {
               << " mm / " << d.median_rotation_deg << " deg, max " << d.max_translation_mm << " mm / "
               << d.max_rotation_deg << " deg\n";
   }
-  std::cerr << t.scene.name << ", demonstration from " << o.inputs.from << "\n"
-            << describe_graph_text(t.scene, graph) << "sampling " << o.samples << " per transition:\n";
+  std::cerr << t.scene().name << ", demonstration from " << o.inputs.from << "\n"
+            << describe_graph_text(t.scene(), graph) << "sampling " << o.samples << " per transition:\n";
   for (size_t i = 0; i < graph.transitions.size(); ++i) {
     std::cerr << "  " << graph.transitions[i].name << ": projected " << stats[i].projected << "/" << o.samples
               << ", collision-free " << stats[i].collision_free << "/" << o.samples << "\n";
@@ -60,13 +59,13 @@ int run_graph(const GraphOptions& o) {
   std::cerr << "projection success " << success_rate * 100 << " %, " << static_cast<long>(per_second)
             << " successful projections/s, collision-free " << total_free << "/" << total << "\n";
   for (const auto& p : report.picks)
-    std::cerr << "pick " << p.pick + 1 << " (" << t.scene.objects[p.object].id << "): "
+    std::cerr << "pick " << p.pick + 1 << " (" << t.scene().objects[p.object].id << "): "
               << (p.feasible() ? "feasible with " + std::to_string(p.handles.size()) + " handle(s)" : p.reason) << "\n";
 
   bool every_transition_free = true;
   for (const auto& s : stats) every_transition_free &= s.collision_free > 0;
   if (o.json) {
-    nlohmann::json d = describe_graph(t.scene, graph);
+    nlohmann::json d = describe_graph(t.scene(), graph);
     nlohmann::json placements = nlohmann::json::array(), grasps = nlohmann::json::array();
     for (const auto& s : d["states"]) (s["kind"] == "placement" ? placements : grasps).push_back(s);
     nlohmann::json transitions = d["transitions"];
@@ -88,7 +87,7 @@ int run_graph(const GraphOptions& o) {
                                 {"projection_success_rate", success_rate},
                                 {"projections_per_second", per_second},
                                 {"collision_free_rate", total ? static_cast<double>(total_free) / total : 0.0},
-                                {"picks", describe_picks(t.scene, report)},
+                                {"picks", describe_picks(t.scene(), report)},
                                 {"deviation_from_subgoals", deviation}}
                      .dump()
               << std::endl;

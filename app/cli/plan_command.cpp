@@ -27,8 +27,7 @@ int run_plan(const PlanOptions& o) {
   const LoadedTask t = load_task_inputs(o.inputs);
   // Cleaned demonstrations are judged against the benchmark's own start and goal; a plan from
   // the raw video estimates against the start and goal those estimates give.
-  const ValidationTask vt = o.inputs.from == "raw" ? validation_task(t.demo, t.scene) : validation_task(t.task, t.scene);
-  const PlanningProblem problem = make_planning_problem(std::make_shared<const Scene>(t.scene), t.demo, vt);
+  const PlanningProblem& problem = t.instance.problem;
   const ConstraintGraph& graph = *problem.graph;
   PlannerSettings settings = o.settings;
   settings.shortcut = !o.no_shortcut;
@@ -40,7 +39,7 @@ int run_plan(const PlanOptions& o) {
                    {"seed", seed},            {"from", o.inputs.from},      {"solved", r.solved},
                    {"planning_time_s", r.planning_time_s}, {"iterations", r.iterations},
                    {"trees", r.trees},        {"nodes", r.nodes}};
-  std::cerr << t.scene.name << ", " << s.planner << ", seed " << seed << ": "
+  std::cerr << t.scene().name << ", " << s.planner << ", seed " << seed << ": "
             << (r.solved ? "solved" : "not solved: " + r.message) << " in " << r.planning_time_s << " s, "
             << r.iterations << " iterations, " << r.trees << " trees, " << r.nodes << " nodes\n";
   if (!r.solved) {
@@ -54,10 +53,10 @@ int run_plan(const PlanOptions& o) {
     }
     // Say whether the demonstration can be done at all from this base pose, and if not, why.
     const FeasibilityReport& feasibility = *s.feasibility;
-    j["picks"] = describe_picks(t.scene, feasibility);
+    j["picks"] = describe_picks(t.scene(), feasibility);
     j["feasible"] = feasibility.feasible();
     std::cerr << (feasibility.feasible() ? "  every pick has a handle that grasps and releases collision-free\n"
-                                         : "  " + feasibility.summary(t.scene));
+                                         : "  " + feasibility.summary(t.scene()));
     if (o.json) std::cout << j.dump() << std::endl;
     return kFailed;
   }
@@ -75,10 +74,10 @@ int run_plan(const PlanOptions& o) {
                      {"detours_removed", s.shortcut.detours_removed}};
   }
   const ValidationReport& v = s.validation;
-  std::cerr << "  validator (" << vt.source << "): " << (v.valid ? "valid" : "INVALID: " + v.message) << "; length robot "
+  std::cerr << "  validator (" << problem.validation.source << "): " << (v.valid ? "valid" : "INVALID: " + v.message) << "; length robot "
             << v.length.robot << " rad, objects " << v.length.object_translation << " m / " << v.length.object_rotation
             << " rad, " << v.grasps << " grasps\n";
-  j["validated_against"] = vt.source;
+  j["validated_against"] = problem.validation.source;
   j["valid"] = v.valid;
   j["validation_message"] = v.message;
   j["path_length"] = {{"robot_rad", v.length.robot}, {"object_m", v.length.object_translation},

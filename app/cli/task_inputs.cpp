@@ -19,15 +19,12 @@ void add_task_inputs(CLI::App& sub, TaskInputs& in, bool with_from) {
 }
 
 LoadedTask load_task_inputs(const TaskInputs& in) {
-  LoadedTask t{load_benchmark_task(in.data_dir, in.task), {}, {}};
-  t.scene = build_benchmark_scene(t.task, in.robot, in.pose);
-  const Demonstration demonstrated =
-      demonstration_from_benchmark(t.task, t.scene, in.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals);
-  // Objects riding on the robot: choose where, and say so when it is not where the demonstrator
+  LoadedTask t{load_benchmark_task(in.data_dir, in.task), {}};
+  t.instance = make_benchmark_instance(t.task, std::make_shared<const Scene>(build_benchmark_scene(t.task, in.robot, in.pose)),
+                                       in.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals);
+  // Objects riding on the robot: say where they were put when it is not where the demonstrator
   // put them.
-  DeckPlacement placed = place_on_deck(t.scene, demonstrated);
-  t.demo = std::move(placed.demonstration);
-  const DeckPlacementReport& deck = placed.report;
+  const DeckPlacementReport& deck = t.instance.deck;
   if (!deck.rests.empty()) {
     std::cerr << "deck poses chosen in " << static_cast<int>(deck.seconds * 1000) << " ms:\n";
     for (const auto& note : deck.notes()) std::cerr << "  " << note << "\n";

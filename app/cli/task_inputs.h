@@ -5,7 +5,7 @@
 
 #include "app/cli/command.h"
 #include "core/demo/benchmark_scene.h"
-#include "core/demo/demonstration.h"
+#include "core/project/benchmark_instance.h"
 
 namespace demoplan::cli {
 
@@ -19,8 +19,9 @@ struct TaskInputs {
 
 struct LoadedTask {
   BenchmarkTask task;
-  Scene scene;
-  Demonstration demo;
+  BenchmarkInstance instance;
+  const Scene& scene() const { return *instance.problem.scene; }
+  const Demonstration& demo() const { return instance.demonstration; }
 };
 
 void add_task_inputs(CLI::App& sub, TaskInputs& inputs, bool with_from = true);

@@ -5,11 +5,9 @@
 #include <memory>
 #include <string>
 
-#include "core/demo/benchmark_demonstration.h"
 #include "core/demo/benchmark_scene.h"
-#include "core/placement/deck_placement.h"
+#include "core/project/benchmark_instance.h"
 #include "core/planning/guided_planner.h"
-#include "core/planning/planning_problem.h"
 
 namespace demoplan {
 
@@ -34,10 +32,8 @@ struct BenchmarkProblem {
 
 private:
   static PlanningProblem make(const BenchmarkTask& task, const std::string& robot, int pose) {
-    auto scene = std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose));
-    const Demonstration demo =
-        place_on_deck(*scene, demonstration_from_benchmark(task, *scene, PoseSource::Subgoals)).demonstration;
-    return make_planning_problem(scene, demo, validation_task(task, *scene));
+    return make_benchmark_instance(task, std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose)),
+                                   PoseSource::Subgoals).problem;
   }
 };
 
