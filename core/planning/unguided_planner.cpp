@@ -151,17 +151,17 @@ private:
   void extend(int root, const Eigen::VectorXd& q_rand) {
     const int near = roadmap_.nearest_in_tree(roadmap_.find(roadmap_.node(root).tree), q_rand);
     const int state = roadmap_.node(near).state;
-    const GraphState& s = graph_->states[state];
+    const StateKind kind = graph_->states[state].kind;  // a copy: the states grow below
     std::uniform_real_distribution<double> u(0.0, 1.0);
     if (u(rng_) >= unguided_.leave_state) {
       Eigen::VectorXd target = q_rand;
-      if (s.kind == StateKind::Grasp) open_gripper(target);
+      if (kind == StateKind::Grasp) open_gripper(target);
       const int last = connect(near, target, state).first;
       if (last != near) link_to_other_trees(last);
       return;
     }
     int transition = -1;
-    if (s.kind == StateKind::Placement) transition = grasp_edge(state);
+    if (kind == StateKind::Placement) transition = grasp_edge(state);
     else transition = release_edge(state);
     if (transition < 0) return;
     // The random configuration projected onto the transition (HPP projects it onto the edge's
@@ -195,18 +195,19 @@ private:
 
   // A release of the held part at a random resting place (or its goal, see goal_placement_bias).
   int release_edge(int state) {
-    const GraphState& s = graph_->states[state];
-    std::vector<ObjectPlacement> objects = s.objects;
+    // Copies: placement_state() may add a state, and references into the states would dangle.
+    const int object = graph_->states[state].object, handle = graph_->states[state].handle;
+    std::vector<ObjectPlacement> objects = graph_->states[state].objects;
     std::uniform_real_distribution<double> u(0.0, 1.0);
     if (unguided_.goal_placement_bias > 0.0 && u(rng_) < unguided_.goal_placement_bias) {
-      objects[s.object] = graph_->states[graph_->goal_state].objects[s.object];
+      objects[object] = graph_->states[graph_->goal_state].objects[object];
     } else {
-      const std::optional<Pose> pose = placements_.sample(s.object, rng_);
+      const std::optional<Pose> pose = placements_.sample(object, rng_);
       if (!pose) return -1;
-      objects[s.object] = {-1, *pose};
+      objects[object] = {-1, *pose};
     }
     const int p = placement_state(objects);
-    return transition(TransitionKind::Release, state, p, s.object, s.handle);
+    return transition(TransitionKind::Release, state, p, object, handle);
   }
 
   // The placement state with these placements; a new one when none has them.
