@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <set>
 
 #include "core/planning/plan_job.h"
@@ -84,4 +85,25 @@ TEST(RestingPoseSampler, PosesRestOnSupportsAnywhereAndTurnedAnyWay) {
   EXPECT_GE(used_supports.size(), 2u);  // the table and the shelf's boards
   EXPECT_GT(max_yaw - min_yaw, 5.0);    // turned all the way round the normal
   EXPECT_GT((hi - lo).head<2>().minCoeff(), 0.2);  // spread over the surfaces, not one spot
+}
+
+// Releases add placement states while references into the state list are alive: a search that
+// makes many of them (the state list reallocates again and again) must run clean (it did not:
+// a release read a moved state). Under the sanitizer build this test is what catches it.
+TEST(UnguidedPlanner, SurvivesASearchThatMakesManyStates) {
+  const BenchmarkProblem p("tunnel_0", "panda", 0);
+  PlannerParams params;
+  params.seed = 1;
+  params.max_iterations = 1200;  // deterministic: the iteration limit ends it, not the clock
+  const PlanResult r = UnguidedPlanner(params).solve(p.problem, StopCondition(600.0));
+  ASSERT_TRUE(r.graph);
+  std::cerr << r.iterations << " iterations, " << r.graph->states.size() << " states\n";
+  EXPECT_GT(r.graph->states.size(), 16u);
+  EXPECT_EQ(r.state_nodes.size(), r.graph->states.size());
+  if (r.solved) {
+    const ValidationReport v = validate_path(p.scene, p.vtask, r.path);
+    EXPECT_TRUE(v.valid) << v.message;
+  } else {
+    EXPECT_NE(r.message.find("iteration limit"), std::string::npos) << r.message;
+  }
 }
