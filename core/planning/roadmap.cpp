@@ -1,6 +1,7 @@
 #include "core/planning/roadmap.h"
 
 #include <algorithm>
+#include <cassert>
 #include <limits>
 #include <queue>
 
@@ -14,6 +15,12 @@ int Roadmap::add_state() {
   all_.emplace_back(dim_);
   groups_in_state_.emplace_back();
   return static_cast<int>(all_.size()) - 1;
+}
+
+void Roadmap::pop_state() {
+  assert(all_.back().size() == 0 && groups_in_state_.back().empty());
+  all_.pop_back();
+  groups_in_state_.pop_back();
 }
 
 int Roadmap::new_tree() {

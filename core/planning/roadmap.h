@@ -30,6 +30,7 @@ public:
   Roadmap(int states, int dim);
 
   int add_state();  // a new empty state; returns its index
+  void pop_state();  // removes the last state, which must have no node
   int new_tree();
   int find(int tree) const;
   int add_node(const Eigen::VectorXd& q, int state, int tree);

@@ -160,6 +160,7 @@ private:
       if (last != near) link_to_other_trees(last);
       return;
     }
+    const size_t states_before = graph_->states.size(), transitions_before = graph_->transitions.size();
     int transition = -1;
     if (kind == StateKind::Placement) transition = grasp_edge(state);
     else transition = release_edge(state);
@@ -167,10 +168,10 @@ private:
     // The random configuration projected onto the transition (HPP projects it onto the edge's
     // target constraints), then the tree extended to its first configuration.
     const TransitionSample sample = projector_.sample_on_transition(transition, q_rand, rng_);
-    if (!sample.ok || !validity_.transition_free(sample, data_)) return;
+    if (!sample.ok || !validity_.transition_free(sample, data_)) return forget_since(states_before, transitions_before);
     const auto [last, reached] = connect(near, sample.q_from(), state);
     if (last != near) link_to_other_trees(last);
-    if (!reached) return;
+    if (!reached) return forget_since(states_before, transitions_before);
     const GraphTransition& tr = graph_->transitions[transition];
     int previous = last;
     for (size_t k = 1; k < sample.path.size(); ++k) {
@@ -179,6 +180,27 @@ private:
       previous = add(sample.path[k], in_to ? tr.to : tr.from, roadmap_.node(last).tree, previous, true);
     }
     link_to_other_trees(previous);
+  }
+
+  // States and transitions made for an edge that failed hold no node: dropped, so the graph keeps
+  // what the search reached (and the operator's state table lists it, not every attempt).
+  void forget_since(size_t states, size_t transitions) {
+    while (graph_->transitions.size() > transitions) {
+      const GraphTransition& t = graph_->transitions.back();
+      transitions_.erase({t.from, t.to});
+      graph_->transitions.pop_back();
+    }
+    while (graph_->states.size() > states) {
+      const GraphState& s = graph_->states.back();
+      if (s.kind == StateKind::Grasp) {
+        grasp_states_[{s.object, s.handle}].pop_back();
+        --grasp_states_made_;
+      } else {
+        --placements_made_;
+      }
+      graph_->states.pop_back();
+      roadmap_.pop_state();
+    }
   }
 
   // A grasp of a random part by a random handle it can be held by, from placement `state`.
@@ -218,7 +240,7 @@ private:
     }
     GraphState s;
     s.kind = StateKind::Placement;
-    s.name = "P" + std::to_string(++placements_made_);
+    s.name = "P" + std::to_string(placements_made_++);
     s.objects = objects;
     return new_state(std::move(s));
   }

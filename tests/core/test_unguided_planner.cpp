@@ -87,10 +87,10 @@ TEST(RestingPoseSampler, PosesRestOnSupportsAnywhereAndTurnedAnyWay) {
   EXPECT_GT((hi - lo).head<2>().minCoeff(), 0.2);  // spread over the surfaces, not one spot
 }
 
-// Releases add placement states while references into the state list are alive: a search that
-// makes many of them (the state list reallocates again and again) must run clean (it did not:
-// a release read a moved state). Under the sanitizer build this test is what catches it.
-TEST(UnguidedPlanner, SurvivesASearchThatMakesManyStates) {
+// Releases and grasps add states while references into the state list are alive, and drop them
+// again when the edge fails: a long search must run clean (it did not: a release read a moved
+// state; the sanitizer build is what catches that) and keep only states it reached.
+TEST(UnguidedPlanner, KeepsOnlyTheStatesItReachedThroughALongSearch) {
   const BenchmarkProblem p("tunnel_0", "panda", 0);
   PlannerParams params;
   params.seed = 1;
@@ -98,8 +98,13 @@ TEST(UnguidedPlanner, SurvivesASearchThatMakesManyStates) {
   const PlanResult r = UnguidedPlanner(params).solve(p.problem, StopCondition(600.0));
   ASSERT_TRUE(r.graph);
   std::cerr << r.iterations << " iterations, " << r.graph->states.size() << " states\n";
-  EXPECT_GT(r.graph->states.size(), 16u);
-  EXPECT_EQ(r.state_nodes.size(), r.graph->states.size());
+  EXPECT_GT(r.graph->states.size(), 4u);
+  ASSERT_EQ(r.state_nodes.size(), r.graph->states.size());
+  for (size_t s = 0; s < r.state_nodes.size(); ++s) EXPECT_GT(r.state_nodes[s], 0u) << r.graph->states[s].name;
+  for (const GraphTransition& t : r.graph->transitions) {
+    EXPECT_LT(t.from, static_cast<int>(r.graph->states.size()));
+    EXPECT_LT(t.to, static_cast<int>(r.graph->states.size()));
+  }
   if (r.solved) {
     const ValidationReport v = validate_path(p.scene, p.vtask, r.path);
     EXPECT_TRUE(v.valid) << v.message;

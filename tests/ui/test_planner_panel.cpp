@@ -1,5 +1,6 @@
 // Plan runs in the background without stalling the event loop; Cancel returns the UI to idle at
 // once and leaves it usable: planning again works and solves the sample.
+#include <QComboBox>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
@@ -122,6 +123,29 @@ private slots:
     panel.resize(900, 600);
     panel.show();
     QVERIFY(panel.grab().save(test::artifactDir() + QStringLiteral("/planner_infeasible.png")));
+  }
+
+  void theUnguidedPlannerIsChosenInTheComboAndShowsItsOwnStates() {
+    Document doc(test::dataDir().toStdString());
+    doc.newFromBenchmark("shelf_0", "panda", 0);
+    PlannerPanel panel(&doc);
+    panel.resize(900, 700);
+    panel.show();
+    const int unguided = panel.plannerBox()->findData(QStringLiteral("unguided"));
+    QVERIFY(unguided >= 0);
+    panel.plannerBox()->setCurrentIndex(unguided);
+    QCOMPARE(doc.planning()->settings().planner_name, std::string("unguided"));
+    QTest::mouseClick(panel.planButton(), Qt::LeftButton);
+    QVERIFY(test::waitFor([&] { return !doc.planning()->runner()->isRunning(); }, 90000));
+    const PlanResultData* r = doc.planning()->result();
+    QVERIFY(r != nullptr);
+    QVERIFY2(r->summary.solved && r->summary.valid, r->summary.message.c_str());
+    // Its own states: it knew the start and the goal only, and found the grasp between them.
+    QCOMPARE(panel.stateTable()->item(0, 0)->text(), QStringLiteral("start"));
+    QCOMPARE(panel.stateTable()->item(1, 0)->text(), QStringLiteral("goal"));
+    QVERIFY(panel.stateTable()->rowCount() > 2);
+    QVERIFY(panel.stateTable()->item(1, 1)->text().toInt() > 0);
+    QVERIFY(panel.grab().save(test::artifactDir() + QStringLiteral("/planner_unguided.png")));
   }
 
   void planIsRefusedWhileTheDemonstrationIsBroken() {

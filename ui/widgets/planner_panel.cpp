@@ -44,7 +44,8 @@ PlannerPanel::PlannerPanel(Document* doc, QWidget* parent) : QWidget(parent), do
     planner_->setItemData(planner_->count() - 1, QString::fromStdString(p.description), Qt::ToolTipRole);
   }
   planner_->setToolTip(tr("Which planner searches for the path (demoplan-cli plan --planner). \"guided\" roots "
-                          "trees at the grasps and releases seen in the video."));
+                          "trees at the grasps and releases seen in the video; \"unguided\" searches as HPP does, "
+                          "from the start and goal placements only."));
   addField(tr("Planner"), planner_);
   seed_ = new QSpinBox(this);
   seed_->setRange(0, 1'000'000'000);
