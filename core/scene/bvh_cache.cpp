@@ -3,6 +3,7 @@
 #include <fcl/fcl.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
 #include <cstdint>
@@ -17,16 +18,17 @@ namespace demoplan {
 namespace {
 
 using Bvh = fcl::BVHModel<fcl::OBBRSSd>;
-using SharedObject = std::shared_ptr<const fcl::CollisionObjectd>;
 
 // What is fitted: the mesh with its scale applied.
 struct FitInput {
   std::vector<fcl::Vector3d> vertices;
   std::vector<fcl::Triangle> triangles;
+  const std::vector<std::array<std::uint32_t, 3>>* mesh_triangles = nullptr;  // the same, for the spheres
 };
 
 FitInput scaled(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
   FitInput in;
+  in.mesh_triangles = &mesh.triangles;
   in.vertices.reserve(mesh.vertices.size());
   for (const auto& v : mesh.vertices) in.vertices.push_back(v.cast<double>().cwiseProduct(scale));
   in.triangles.reserve(mesh.triangles.size());
@@ -67,19 +69,20 @@ bool fitted_from(const fcl::CollisionObjectd& object, const FitInput& in) {
 
 std::atomic<std::size_t> fit_count{0};
 
-SharedObject fit(const FitInput& in) {
+SharedMesh fit(const FitInput& in) {
   auto bvh = std::make_shared<Bvh>();
   bvh->beginModel(static_cast<int>(in.triangles.size()), static_cast<int>(in.vertices.size()));
   bvh->addSubModel(in.vertices, in.triangles);
   bvh->endModel();
   // The constructor computes the geometry's local AABB: here, before any other thread sees it.
   auto object = std::make_shared<const fcl::CollisionObjectd>(bvh);
+  auto spheres = std::make_shared<const SphereSet>(fit_bounding_spheres(in.vertices, *in.mesh_triangles));
   ++fit_count;
-  return object;
+  return {std::move(object), std::move(spheres)};
 }
 
 struct Entry {
-  std::shared_future<SharedObject> object;  // ready once fitted; others wait on it
+  std::shared_future<SharedMesh> object;  // ready once fitted; others wait on it
 };
 
 struct Cache {
@@ -92,7 +95,7 @@ Cache& cache() {
   return c;
 }
 
-SharedObject find_or_fit(const FitInput& in, std::uint64_t hash) {
+SharedMesh find_or_fit(const FitInput& in, std::uint64_t hash) {
   Cache& c = cache();
   std::vector<std::shared_ptr<Entry>> candidates;
   {
@@ -102,11 +105,11 @@ SharedObject find_or_fit(const FitInput& in, std::uint64_t hash) {
   }
   // Outside the lock: a candidate may still be fitting in another thread.
   for (const auto& e : candidates) {
-    SharedObject o = e->object.get();
-    if (fitted_from(*o, in)) return o;
+    SharedMesh o = e->object.get();
+    if (fitted_from(*o.bvh, in)) return o;
   }
 
-  std::promise<SharedObject> promise;
+  std::promise<SharedMesh> promise;
   const auto mine = std::make_shared<Entry>(Entry{promise.get_future().share()});
   bool entered_meanwhile = false;
   {
@@ -121,7 +124,7 @@ SharedObject find_or_fit(const FitInput& in, std::uint64_t hash) {
   if (entered_meanwhile) return find_or_fit(in, hash);
 
   try {
-    SharedObject o = fit(in);
+    SharedMesh o = fit(in);
     promise.set_value(o);
     return o;
   } catch (...) {
@@ -141,10 +144,14 @@ SharedObject find_or_fit(const FitInput& in, std::uint64_t hash) {
 
 }  // namespace
 
-std::shared_ptr<const fcl::CollisionObjectd> shared_mesh_bvh(const TriangleMesh& mesh,
-                                                             const Eigen::Vector3d& scale) {
+SharedMesh shared_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
   const FitInput in = scaled(mesh, scale);
   return find_or_fit(in, content_hash(in));
+}
+
+std::shared_ptr<const fcl::CollisionObjectd> shared_mesh_bvh(const TriangleMesh& mesh,
+                                                             const Eigen::Vector3d& scale) {
+  return shared_mesh(mesh, scale).bvh;
 }
 
 std::size_t bvh_fits() { return fit_count.load(); }

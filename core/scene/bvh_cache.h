@@ -1,5 +1,6 @@
 #pragma once
-// Process-wide cache of fitted FCL mesh BVHs (OBBRSS).
+// Process-wide cache of fitted FCL mesh BVHs (OBBRSS), and of the bounding spheres the
+// collision checker's fast path tests first (fitted to the same scaled mesh, at the same time).
 //
 // Fitting a BVH is the costly part of building a CollisionChecker, and a process builds many
 // checkers of the same meshes: planner, validator, every reload of a scene. Each distinct mesh
@@ -14,6 +15,7 @@
 #include <memory>
 
 #include "core/model/mesh.h"
+#include "core/scene/bounding_spheres.h"
 
 namespace fcl {
 template <typename S>
@@ -28,6 +30,14 @@ namespace demoplan {
 // Thread-safe; concurrent requests for the same mesh wait for one fit.
 std::shared_ptr<const fcl::CollisionObject<double>> shared_mesh_bvh(const TriangleMesh& mesh,
                                                                     const Eigen::Vector3d& scale);
+
+// A mesh's shared BVH (as shared_mesh_bvh) and the bounding spheres fitted with it (see
+// bounding_spheres.h), both from one cache entry.
+struct SharedMesh {
+  std::shared_ptr<const fcl::CollisionObject<double>> bvh;
+  std::shared_ptr<const SphereSet> spheres;
+};
+SharedMesh shared_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale);
 
 // Number of BVHs fitted in this process so far.
 std::size_t bvh_fits();

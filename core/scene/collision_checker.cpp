@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <set>
 
 #include "core/error.h"
 #include "core/scene/bvh_cache.h"
+#include "core/scene/geometry_bounds.h"
 
 namespace demoplan {
 
@@ -49,20 +51,35 @@ struct GeomInfo {
   bool world_fixed = false;    // robot geometry on the root of a fixed-base robot
   bool robot_ignored = false;  // furniture geometry the robot never collides with
   std::shared_ptr<const CollisionObjectd> prototype;  // at the identity; copied, never placed
+  GeometryBound bound;  // for the fast path
+  // Where this geometry's world sphere centres are: furniture in Impl::furniture_centres, placed
+  // once; robot and object geometries in Workspace::centres, placed per query when first needed
+  // (slot indexes Workspace::placed_at).
+  int centre_offset = 0;
+  int child_offset = 0;  // children's centres, in the same array's children counterpart
+  int part_offset = 0;   // moving geometries: into Workspace::child_placed
+  int slot = -1;
 };
 
-// An object at the identity to copy (see bvh_cache.h). Meshes come fitted from the process-wide
-// cache; primitives are cheap and belong to this checker.
-std::shared_ptr<const CollisionObjectd> make_prototype(const Geometry& g) {
+struct Prototype {
+  std::shared_ptr<const CollisionObjectd> object;
+  GeometryBound bound;
+};
+
+// An object at the identity to copy (see bvh_cache.h), and its bounds. Meshes come fitted from
+// the process-wide cache with their spheres; primitives are cheap and belong to this checker.
+Prototype make_prototype(const Geometry& g) {
   auto own = [](std::shared_ptr<fcl::CollisionGeometryd> geometry) {
     return std::make_shared<const CollisionObjectd>(std::move(geometry));
   };
-  if (auto* b = std::get_if<BoxShape>(&g.shape)) return own(std::make_shared<fcl::Boxd>(b->size));
+  if (auto* b = std::get_if<BoxShape>(&g.shape)) return {own(std::make_shared<fcl::Boxd>(b->size)), box_bound(b->size)};
   if (auto* c = std::get_if<CylinderShape>(&g.shape))
-    return own(std::make_shared<fcl::Cylinderd>(c->radius, c->length));
-  if (auto* s = std::get_if<SphereShape>(&g.shape)) return own(std::make_shared<fcl::Sphered>(s->radius));
+    return {own(std::make_shared<fcl::Cylinderd>(c->radius, c->length)), cylinder_bound(c->radius, c->length)};
+  if (auto* s = std::get_if<SphereShape>(&g.shape))
+    return {own(std::make_shared<fcl::Sphered>(s->radius)), sphere_bound(s->radius)};
   const auto& m = std::get<MeshShape>(g.shape);
-  return shared_mesh_bvh(*m.mesh, m.scale);
+  SharedMesh shared = shared_mesh(*m.mesh, m.scale);
+  return {std::move(shared.bvh), mesh_bound(std::move(shared.spheres))};
 }
 
 }  // namespace collision_detail
@@ -84,6 +101,13 @@ struct CollisionData::Workspace {
   std::vector<char> world_free;                    // per object geometry
   std::vector<std::vector<int>> world_allowed;     // allowed furniture when world_free was set
   std::vector<char> pair_free;                     // object geometry pairs, row-major
+
+  // Fast path: world sphere centres of the robot and object geometries, placed when a pair
+  // first needs them in a query (GeomInfo::centre_offset, slot).
+  std::vector<Eigen::Vector3d> centres, children;
+  std::vector<std::uint64_t> placed_at;     // per slot: the query they were placed for
+  std::vector<std::uint64_t> child_placed;  // per part of every geometry: the same for its children
+  std::uint64_t query = 0;
 };
 
 CollisionData::CollisionData() = default;
@@ -94,7 +118,10 @@ CollisionData& CollisionData::operator=(CollisionData&&) noexcept = default;
 using Workspace = CollisionData::Workspace;
 
 struct CollisionChecker::Impl {
+  CollisionOptions options;
   std::vector<GeomInfo> robot, objects, furniture;
+  std::vector<Eigen::Vector3d> furniture_centres, furniture_children;  // world, fixed
+  size_t moving_centres = 0, moving_children = 0, moving_parts = 0;    // Workspace sizes
   std::vector<CollisionObjectd> robot_proto, object_proto;
   std::vector<std::unique_ptr<CollisionObjectd>> furniture_objects;
   fcl::DynamicAABBTreeCollisionManagerd world;
@@ -115,6 +142,7 @@ struct CollisionChecker::Impl {
     bool done() const { return hit && !all; }
 
     void narrow(CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {
+      if (impl->options.fast_path && impl->certainly_apart(*data, a, ia, b, ib)) return;
       data->result.clear();
       if (fcl::collide(&a, &b, data->request, data->result) == 0) return;
       CollisionPair p{ia.name, ib.name};
@@ -124,6 +152,25 @@ struct CollisionChecker::Impl {
       if (all) all->push_back(std::move(p));
     }
   };
+
+  PlacedBound placed(Workspace& d, const CollisionObjectd& o, const GeomInfo& g) const {
+    if (g.owner == Owner::Furniture)  // all placed at construction: children never written
+      return {&g.bound, &o.getTransform(), furniture_centres.data() + g.centre_offset,
+              const_cast<Eigen::Vector3d*>(furniture_children.data()) + g.child_offset, nullptr, 0};
+    Eigen::Vector3d* c = d.centres.data() + g.centre_offset;
+    if (d.placed_at[g.slot] != d.query) {
+      place_centres(g.bound, o.getTransform(), c);
+      d.placed_at[g.slot] = d.query;
+    }
+    return {&g.bound, &o.getTransform(), c, d.children.data() + g.child_offset, d.child_placed.data() + g.part_offset,
+            d.query};
+  }
+
+  // The fast path's pre-test: true only when FCL would find the pair free.
+  bool certainly_apart(Workspace& d, const CollisionObjectd& a, const GeomInfo& ia, const CollisionObjectd& b,
+                       const GeomInfo& ib) const {
+    return certainly_separated(placed(d, a, ia), placed(d, b, ib));
+  }
 
   bool skip_furniture(const GeomInfo& moving, const GeomInfo& f, const AllowedContacts& allowed) const {
     if (moving.owner == Owner::Robot) return moving.world_fixed || f.robot_ignored;
@@ -146,6 +193,7 @@ struct CollisionChecker::Impl {
   }
 
   void place(const Scene& scene, const SceneState& state, Workspace& d) const {
+    ++d.query;  // every geometry's world spheres are stale
     forward_kinematics(scene.robot.model, state.q, scene.robot.base, d.link_poses);
     d.object_poses = state.objects;
     for (const auto& a : state.attachments) d.object_poses[a.object] = d.link_poses[a.link] * a.link_T_object;
@@ -244,8 +292,11 @@ struct CollisionChecker::Impl {
 
 CollisionChecker::CollisionChecker(const Scene& scene, CollisionOptions options)
     : scene_(scene), impl_(std::make_unique<Impl>()) {
+  impl_->options = options;
   auto add = [&](std::vector<GeomInfo>& list, GeomInfo info, const Geometry& g) {
-    info.prototype = make_prototype(g);
+    Prototype p = make_prototype(g);
+    info.prototype = std::move(p.object);
+    info.bound = std::move(p.bound);
     list.push_back(std::move(info));
   };
 
@@ -320,6 +371,27 @@ CollisionChecker::CollisionChecker(const Scene& scene, CollisionOptions options)
       }
     }
   }
+  // Sphere slots: the moving geometries' in each Workspace, the furniture's here, placed once.
+  int slot = 0;
+  for (auto* list : {&impl_->robot, &impl_->objects})
+    for (auto& info : *list) {
+      info.slot = slot++;
+      info.centre_offset = static_cast<int>(impl_->moving_centres);
+      info.child_offset = static_cast<int>(impl_->moving_children);
+      info.part_offset = static_cast<int>(impl_->moving_parts);
+      impl_->moving_centres += info.bound.centre_count();
+      impl_->moving_children += info.bound.child_count();
+      impl_->moving_parts += info.bound.part_count();
+    }
+  for (auto& info : impl_->furniture) {
+    info.centre_offset = static_cast<int>(impl_->furniture_centres.size());
+    info.child_offset = static_cast<int>(impl_->furniture_children.size());
+    impl_->furniture_centres.resize(impl_->furniture_centres.size() + info.bound.centre_count());
+    impl_->furniture_children.resize(impl_->furniture_children.size() + info.bound.child_count());
+    place_centres(info.bound, info.local, impl_->furniture_centres.data() + info.centre_offset);
+    place_children(info.bound, info.local, impl_->furniture_children.data() + info.child_offset);
+  }
+
   // Pointers into impl_->furniture stay valid: the vector is complete now.
   for (auto& info : impl_->furniture) {
     auto obj = std::make_unique<CollisionObjectd>(*info.prototype);
@@ -346,6 +418,10 @@ CollisionData CollisionChecker::make_data() const {
   d.w_ = std::make_unique<Workspace>();
   d.w_->robot = impl_->robot_proto;
   d.w_->objects = impl_->object_proto;
+  d.w_->centres.resize(impl_->moving_centres);
+  d.w_->children.resize(impl_->moving_children);
+  d.w_->child_placed.assign(impl_->moving_parts, 0);
+  d.w_->placed_at.assign(impl_->robot.size() + impl_->objects.size(), 0);
   return d;
 }
 

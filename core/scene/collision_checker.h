@@ -3,7 +3,9 @@
 //
 // Broad phase: the furniture sits in one FCL dynamic AABB tree built once; every moving
 // geometry (robot links, objects) queries it. Moving-vs-moving pairs are listed once at
-// construction and pruned per query by their world AABBs before the narrow phase.
+// construction and pruned per query by their world AABBs before the narrow phase. Each pair
+// left is first tested on its bounding spheres or exact primitive (CollisionOptions::fast_path),
+// and goes to FCL's narrow phase only when those may touch.
 // The checker is immutable after construction; each thread passes its own CollisionData.
 #include <Eigen/Core>
 #include <memory>
@@ -47,6 +49,10 @@ struct DistanceResult {
 struct CollisionOptions {
   // Skip robot links joined by one moving joint (besides the SRDF's disabled pairs).
   bool skip_adjacent_links = true;
+  // Before FCL's narrow phase, test the pair's bounds (spheres fitted to meshes, exact boxes,
+  // cylinders and spheres) and skip FCL when they are certainly apart (geometry_bounds.h).
+  // Answers and reported pairs are the same either way; off: FCL alone, for comparison.
+  bool fast_path = true;
 };
 
 // Per-thread workspace of a checker: FCL objects at this query's poses, request and result.

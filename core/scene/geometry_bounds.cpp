@@ -1,0 +1,153 @@
+#include "core/scene/geometry_bounds.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace demoplan {
+
+namespace {
+
+using Vec = Eigen::Vector3d;
+
+GeometryBound primitive(GeometryBound::Kind kind, const Vec& half, double circumradius) {
+  GeometryBound b;
+  b.kind = kind;
+  b.half = half;
+  auto set = std::make_shared<SphereSet>();
+  set->all.radius = circumradius;
+  set->all.radius += bounding_sphere_margin(set->all);
+  set->parts = {set->all};
+  set->children = {set->all};
+  set->children_begin = {0, 1};
+  b.spheres = std::move(set);
+  return b;
+}
+
+bool spheres_apart(const Vec& ca, double ra, const Vec& cb, double rb) {
+  const double r = ra + rb;
+  return (ca - cb).squaredNorm() > r * r;
+}
+
+// Squared distance from a point in the primitive's frame to the solid primitive.
+double squared_distance(const GeometryBound& p, const Vec& x) {
+  switch (p.kind) {
+    case GeometryBound::Kind::Box:
+      return (x.cwiseAbs() - p.half).cwiseMax(0.0).squaredNorm();
+    case GeometryBound::Kind::Cylinder: {
+      const double radial = std::max(std::sqrt(x.x() * x.x() + x.y() * x.y()) - p.half.x(), 0.0);
+      const double axial = std::max(std::abs(x.z()) - p.half.z(), 0.0);
+      return radial * radial + axial * axial;
+    }
+    case GeometryBound::Kind::Sphere: {
+      const double d = std::max(x.norm() - p.half.x(), 0.0);
+      return d * d;
+    }
+    default:
+      return 0.0;
+  }
+}
+
+// The world centres of part `i`'s children, placed now if this query has not yet.
+const Vec* children_of(const PlacedBound& b, size_t i) {
+  const SphereSet& s = *b.bound->spheres;
+  const int begin = s.children_begin[i], end = s.children_begin[i + 1];
+  if (b.child_placed && b.child_placed[i] != b.stamp) {
+    for (int k = begin; k < end; ++k) b.children[k] = *b.pose * s.children[k].centre;
+    b.child_placed[i] = b.stamp;
+  }
+  return b.children;
+}
+
+// Every sphere of `a` against the exact primitive `p`, coarse to fine: the whole, each part,
+// and a part's children only when the part may touch.
+bool spheres_apart_from_primitive(const PlacedBound& a, const PlacedBound& p) {
+  const Eigen::Matrix3d Rt = p.pose->linear().transpose();
+  const Vec t = p.pose->translation();
+  auto apart = [&](const Vec& centre, double radius) {
+    return squared_distance(*p.bound, Rt * (centre - t)) > radius * radius;
+  };
+  const SphereSet& s = *a.bound->spheres;
+  if (apart(a.centres[0], s.all.radius)) return true;
+  for (size_t i = 0; i < s.parts.size(); ++i) {
+    if (apart(a.centres[1 + i], s.parts[i].radius)) continue;
+    const Vec* c = children_of(a, i);
+    for (int k = s.children_begin[i]; k < s.children_begin[i + 1]; ++k)
+      if (!apart(c[k], s.children[k].radius)) return false;
+  }
+  return true;
+}
+
+bool sphere_sets_apart(const PlacedBound& a, const PlacedBound& b) {
+  const SphereSet& sa = *a.bound->spheres;
+  const SphereSet& sb = *b.bound->spheres;
+  if (spheres_apart(a.centres[0], sa.all.radius, b.centres[0], sb.all.radius)) return true;
+  for (size_t i = 0; i < sa.parts.size(); ++i) {
+    const Vec& ca = a.centres[1 + i];
+    const double ra = sa.parts[i].radius;
+    if (spheres_apart(ca, ra, b.centres[0], sb.all.radius)) continue;
+    for (size_t j = 0; j < sb.parts.size(); ++j) {
+      const Vec& cb = b.centres[1 + j];
+      const double rb = sb.parts[j].radius;
+      if (spheres_apart(ca, ra, cb, rb)) continue;
+      // Parts i and j may touch: part i's children against part j, then against its children.
+      const Vec* ka = children_of(a, i);
+      const Vec* kb = nullptr;
+      for (int x = sa.children_begin[i]; x < sa.children_begin[i + 1]; ++x) {
+        const double rx = sa.children[x].radius;
+        if (spheres_apart(ka[x], rx, cb, rb)) continue;
+        if (!kb) kb = children_of(b, j);
+        for (int y = sb.children_begin[j]; y < sb.children_begin[j + 1]; ++y)
+          if (!spheres_apart(ka[x], rx, kb[y], sb.children[y].radius)) return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool is_primitive(const GeometryBound& b) {
+  return b.kind == GeometryBound::Kind::Box || b.kind == GeometryBound::Kind::Cylinder ||
+         b.kind == GeometryBound::Kind::Sphere;
+}
+
+}  // namespace
+
+GeometryBound box_bound(const Eigen::Vector3d& size) {
+  const Vec half = 0.5 * size;
+  return primitive(GeometryBound::Kind::Box, half, half.norm());
+}
+
+GeometryBound cylinder_bound(double radius, double length) {
+  return primitive(GeometryBound::Kind::Cylinder, Vec(radius, radius, 0.5 * length), std::hypot(radius, 0.5 * length));
+}
+
+GeometryBound sphere_bound(double radius) {
+  return primitive(GeometryBound::Kind::Sphere, Vec::Constant(radius), radius);
+}
+
+GeometryBound mesh_bound(std::shared_ptr<const SphereSet> spheres) {
+  GeometryBound b;
+  if (!spheres || spheres->parts.empty()) return b;  // Kind::None
+  b.kind = GeometryBound::Kind::Mesh;
+  b.spheres = std::move(spheres);
+  return b;
+}
+
+void place_centres(const GeometryBound& bound, const Pose& pose, Eigen::Vector3d* out) {
+  if (!bound.spheres) return;
+  out[0] = pose * bound.spheres->all.centre;
+  for (size_t i = 0; i < bound.spheres->parts.size(); ++i) out[1 + i] = pose * bound.spheres->parts[i].centre;
+}
+
+void place_children(const GeometryBound& bound, const Pose& pose, Eigen::Vector3d* out) {
+  if (!bound.spheres) return;
+  for (size_t i = 0; i < bound.spheres->children.size(); ++i) out[i] = pose * bound.spheres->children[i].centre;
+}
+
+bool certainly_separated(const PlacedBound& a, const PlacedBound& b) {
+  if (a.bound->kind == GeometryBound::Kind::None || b.bound->kind == GeometryBound::Kind::None) return false;
+  if (is_primitive(*b.bound)) return spheres_apart_from_primitive(a, b);
+  if (is_primitive(*a.bound)) return spheres_apart_from_primitive(b, a);
+  return sphere_sets_apart(a, b);
+}
+
+}  // namespace demoplan
