@@ -96,21 +96,8 @@ private:
   }
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_time_).count(); }
   bool cancelled() const { return stop_.cancelled(); }
-  bool stop_requested(PlanResult& r) {
-    if (cancelled()) {
-      r.cancelled = true;
-      r.message = "cancelled after " + std::to_string(iterations_) + " iterations";
-      return true;
-    }
-    if (iterations_ >= params_.max_iterations) {
-      r.message = "iteration limit (" + std::to_string(params_.max_iterations) + ") reached";
-      return true;
-    }
-    if (stop_.timed_out()) {
-      r.message = "time limit (" + std::to_string(stop_.time_limit_s()) + " s) reached";
-      return true;
-    }
-    return false;
+  bool stop_requested(PlanResult& r) const {
+    return demoplan::stop_requested(stop_, iterations_, params_.max_iterations, r);
   }
   bool connected() const { return roadmap_.find(roadmap_.node(start_).tree) == roadmap_.find(roadmap_.node(goal_).tree); }
 

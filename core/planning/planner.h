@@ -87,6 +87,10 @@ struct PlanResult {
   std::shared_ptr<const ConstraintGraph> graph;
 };
 
+// Whether a sampling planner must stop after `iterations`: cancelled (sets r.cancelled), the
+// iteration limit or the time limit; r.message then says which.
+bool stop_requested(const StopCondition& stop, long iterations, long max_iterations, PlanResult& r);
+
 class Planner {
 public:
   virtual ~Planner() = default;

@@ -130,21 +130,8 @@ private:
     return r;
   }
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_time_).count(); }
-  bool stop_requested(PlanResult& r) {
-    if (stop_.cancelled()) {
-      r.cancelled = true;
-      r.message = "cancelled after " + std::to_string(iterations_) + " iterations";
-      return true;
-    }
-    if (iterations_ >= params_.max_iterations) {
-      r.message = "iteration limit (" + std::to_string(params_.max_iterations) + ") reached";
-      return true;
-    }
-    if (stop_.timed_out()) {
-      r.message = "time limit (" + std::to_string(stop_.time_limit_s()) + " s) reached";
-      return true;
-    }
-    return false;
+  bool stop_requested(PlanResult& r) const {
+    return demoplan::stop_requested(stop_, iterations_, params_.max_iterations, r);
   }
 
   // One M-RRT step of the tree of `root` towards q_rand.
