@@ -58,6 +58,7 @@ struct Run {
   int trees = 0;
   size_t nodes = 0;
   std::string message;
+  std::string regrasp;  // the regrasp the planner added, if any
   ValidationReport raw, shortened;
   double shortcut_s = 0;
 };
@@ -159,6 +160,7 @@ int run_bench(const BenchOptions& o) {
       r.trees = s.plan.trees;
       r.nodes = s.plan.nodes;
       r.message = s.plan.message;
+      r.regrasp = s.plan.regrasp;
       if (!r.solved)
         std::call_once(in.assessed, [&] {
           PlannerSettings once = settings;
@@ -254,13 +256,15 @@ int run_bench(const BenchOptions& o) {
   std::cerr << "total " << std::lround(total_s) << " s\n";
   if (!o.out.empty()) {
     nlohmann::json all = nlohmann::json::array();
-    for (const Run& r : runs)
+    for (const Run& r : runs) {
       all.push_back({{"planner", r.planner}, {"task", r.task}, {"robot", r.robot}, {"pose", r.pose}, {"seed", r.seed}, {"solved", r.solved},
                      {"valid", r.solved && r.raw.valid}, {"message", r.solved ? r.raw.message : r.message},
                      {"feasible", !instances.at({r.task, r.robot, r.pose})->infeasible},
                      {"planning_time_s", r.time_s}, {"iterations", r.iterations}, {"trees", r.trees},
                      {"nodes", r.nodes}, {"path_length_rad", r.raw.length.robot},
                      {"shortened_path_length_rad", r.shortened.length.robot}, {"grasps", r.raw.grasps}});
+      if (!r.regrasp.empty()) all.back()["regrasp"] = r.regrasp;
+    }
     write_json_file_atomic(o.out, {{"format", "demoplan-bench"}, {"version", 1}, {"from", o.from}, {"rows", rows},
                                   {"comparisons", comparisons}, {"runs", all}});
   }

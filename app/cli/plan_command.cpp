@@ -42,6 +42,10 @@ int run_plan(const PlanOptions& o) {
   std::cerr << t.scene().name << ", " << s.planner << ", seed " << seed << ": "
             << (r.solved ? "solved" : "not solved: " + r.message) << " in " << r.planning_time_s << " s, "
             << r.iterations << " iterations, " << r.trees << " trees, " << r.nodes << " nodes\n";
+  if (!r.regrasp.empty()) {
+    j["regrasp"] = r.regrasp;
+    std::cerr << "  regrasp the demonstration does not show: " << r.regrasp << "\n";
+  }
   if (!r.solved) {
     j["message"] = r.message;
     j["valid"] = false;

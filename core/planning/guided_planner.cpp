@@ -1,5 +1,7 @@
 #include <algorithm>
 #include <chrono>
+#include <limits>
+#include <memory>
 #include <random>
 #include <set>
 
@@ -9,6 +11,7 @@
 #include "core/planning/roadmap.h"
 #include "core/planning/guided_planner.h"
 #include "core/planning/path_from_nodes.h"
+#include "core/planning/regrasp.h"
 
 namespace demoplan {
 
@@ -26,51 +29,62 @@ public:
         rng_(params.seed), sampled_(graph.transitions.size(), 0),
         roots_(graph.transitions.size()) {}
 
-  PlanResult run() {
+  // Roots the start and goal trees; false when either end is in collision (finish() says which).
+  bool begin() {
     start_time_ = Clock::now();
     last_progress_ = start_time_;
-    PlanResult result;
     CollisionPair hit;
-    if (!validity_.configuration_free(graph_.start_state, graph_.q_start, data_, &hit))
-      return fail(result, "the start configuration is in collision (" + hit.first + " / " + hit.second + ")");
-    if (!validity_.configuration_free(graph_.goal_state, graph_.q_goal, data_, &hit))
-      return fail(result, "the goal configuration is in collision (" + hit.first + " / " + hit.second + ")");
+    if (!validity_.configuration_free(graph_.start_state, graph_.q_start, data_, &hit)) {
+      fail(result_, "the start configuration is in collision (" + hit.first + " / " + hit.second + ")");
+      return false;
+    }
+    if (!validity_.configuration_free(graph_.goal_state, graph_.q_goal, data_, &hit)) {
+      fail(result_, "the goal configuration is in collision (" + hit.first + " / " + hit.second + ")");
+      return false;
+    }
     start_ = roadmap_.add_node(graph_.q_start, graph_.start_state, roadmap_.new_tree());
     goal_ = roadmap_.add_node(graph_.q_goal, graph_.goal_state, roadmap_.new_tree());
     trees_created_ = 2;
     attempt_link(goal_);
-    std::vector<int> chain;
-    bool accepted = false;
+    begun_ = true;
+    return true;
+  }
+
+  enum class Outcome { Solved, Stopped, Paused };
+  // Searches until start and goal share a tree along a path that passes the final check
+  // (Solved), `stop` or the iteration limit ends it (Stopped), or `until` iterations are done
+  // (Paused: advance() again resumes exactly where it paused).
+  Outcome advance(long until = std::numeric_limits<long>::max()) {
     while (true) {
       while (!connected()) {
-        if (stop_requested(result)) break;
+        if (iterations_ >= until) return Outcome::Paused;
+        if (stop_requested(result_)) return Outcome::Stopped;
         ++iterations_;
         const int state = choose_step();
         if (state < 0) sample_tree();
         else grow(state);
         report(false);
       }
-      if (!connected()) break;
-      result.path = extract_path(chain);
-      if (!params_.final_check) {
-        accepted = true;
-        break;
-      }
+      result_.path = extract_path(chain_);
       // Beyond the paper: see PlannerParams::final_check.
-      const int bad = check_path(result.path);
+      if (!params_.final_check) return Outcome::Solved;
+      const int bad = check_path(result_.path);
       if (cancelled()) {
-        stop_requested(result);
-        break;
+        stop_requested(result_);
+        return Outcome::Stopped;
       }
-      if (bad < 0) {
-        accepted = true;
-        break;
-      }
-      const int a = chain[static_cast<size_t>(bad)], b = chain[static_cast<size_t>(bad) + 1];
+      if (bad < 0) return Outcome::Solved;
+      const int a = chain_[static_cast<size_t>(bad)], b = chain_[static_cast<size_t>(bad) + 1];
       forbidden_.insert({std::min(a, b), std::max(a, b)});
       roadmap_.cut(a, b);
-      ++result.rejected_paths;
+      ++result_.rejected_paths;
     }
+  }
+
+  // The result after advance() returned `outcome` (or begin() failed).
+  PlanResult finish(Outcome outcome) {
+    PlanResult result = std::move(result_);
+    if (!begun_) return result;
     result.iterations = iterations_;
     result.trees = trees_created_;
     result.nodes = roadmap_.size();
@@ -79,13 +93,46 @@ public:
     for (size_t t = 0; t < sampled_.size(); ++t)
       if (!sampled_[t]) result.unsampled_transitions.push_back(graph_.transitions[t].name);
     report(true);
-    if (accepted) {
+    if (outcome == Outcome::Solved) {
       result.solved = true;
     } else {
       result.path = {};
       if (result.message.empty()) result.message = "no path within " + std::to_string(iterations_) + " iterations";
     }
     return result;
+  }
+
+  long iterations() const { return iterations_; }
+
+  // The picks where the search is stuck: the first pick the start's tree reaches the beginning
+  // of but not the end, and the last one the goal's tree reaches the end of but not the
+  // beginning (one pick when both agree); every pick when neither says.
+  std::vector<int> stalled_picks() const {
+    const int from_start = roadmap_.find(roadmap_.node(start_).tree), from_goal = roadmap_.find(roadmap_.node(goal_).tree);
+    auto reaches = [&](int state, int component) {
+      for (int group : roadmap_.groups_in(state))
+        if (roadmap_.find(group) == component) return true;
+      return false;
+    };
+    std::vector<int> out;
+    const int n = static_cast<int>(graph_.picks.size());
+    for (int k = 0; k < n; ++k) {
+      const GraphPick& p = graph_.picks[static_cast<size_t>(k)];
+      if (reaches(p.from, from_start) && !reaches(p.to, from_start)) {
+        out.push_back(k);
+        break;
+      }
+    }
+    for (int k = n - 1; k >= 0; --k) {
+      const GraphPick& p = graph_.picks[static_cast<size_t>(k)];
+      if (reaches(p.to, from_goal) && !reaches(p.from, from_goal)) {
+        if (std::find(out.begin(), out.end(), k) == out.end()) out.push_back(k);
+        break;
+      }
+    }
+    if (out.empty())
+      for (int k = 0; k < n; ++k) out.push_back(k);
+    return out;
   }
 
 private:
@@ -289,6 +336,9 @@ private:
   std::vector<int> sampled_;  // collision-free samples per transition (repeated roots included)
   std::set<std::pair<int, int>> forbidden_;  // links cut after a failed path check
   std::vector<std::vector<int>> roots_;  // per transition: the first node of each root
+  PlanResult result_;  // filled as the search goes: message, rejected paths, the path found
+  std::vector<int> chain_;
+  bool begun_ = false;
   int start_ = -1, goal_ = -1;
   long iterations_ = 0;
   int trees_created_ = 0;
@@ -302,7 +352,107 @@ private:
 
 PlanResult GuidedPlanner::solve(const PlanningProblem& problem, const StopCondition& stop,
                                  const ProgressCallback& progress) {
-  return GuidedRrt(*problem.scene, *problem.graph, *problem.checker, params_, progress, stop).run();
+  const auto began = Clock::now();
+  GuidedRrt demonstrated(*problem.scene, *problem.graph, *problem.checker, params_, progress, stop);
+  if (!demonstrated.begin()) return demonstrated.finish(GuidedRrt::Outcome::Stopped);
+  GuidedRrt::Outcome outcome = demonstrated.advance(problem.demonstration && params_.regrasp_after > 0
+                                                        ? params_.regrasp_after
+                                                        : std::numeric_limits<long>::max());
+  if (outcome != GuidedRrt::Outcome::Paused) return demonstrated.finish(outcome);
+
+  // The demonstration as shown has not been solved in regrasp_after iterations: go on with it,
+  // and beside it plan variants where a stalled pick has a regrasp (regrasp.h). Per round the
+  // demonstrated search gets regrasp_slice iterations and the variants as many together; a
+  // variant that has had regrasp_budget iterations gives its place to a new placement.
+  // Deterministic: iteration counts, no clocks, decide who runs.
+  const Scene& scene = *problem.scene;
+  struct Variant {
+    Regrasp regrasp;
+    PlanningProblem problem;
+    std::unique_ptr<GuidedRrt> search;
+  };
+  std::vector<Variant> variants;
+  std::mt19937_64 rng(params_.seed);
+  const std::vector<int> picks = demonstrated.stalled_picks();
+  int tried = 0, pick_turn = 0, dry = 0;
+  long others = 0;  // iterations of the searches not reporting, for the progress shown
+  long retired = 0;  // iterations of variants already replaced
+  std::vector<std::string> names;
+  ProgressCallback shown;  // a variant's progress: its own states' names, every search's iterations
+  if (progress)
+    shown = [&](const PlannerProgress& p) {
+      PlannerProgress q = p;
+      q.iterations += others;
+      if (q.state_names.empty()) q.state_names = names;
+      progress(q);
+    };
+  // A variant with the next regrasp placement, picks taken in turn; false when none is found.
+  auto next_variant = [&](Variant& v) {
+    while (dry < static_cast<int>(picks.size()) && !stop.should_stop()) {
+      const int pick = picks[static_cast<size_t>(pick_turn++ % static_cast<int>(picks.size()))];
+      const std::vector<Regrasp> found = find_regrasps(scene, *problem.demonstration, *problem.checker, pick, 1, rng, stop);
+      if (found.empty()) {
+        ++dry;  // no placement in this pick's attempts: do not search it again
+        continue;
+      }
+      dry = 0;
+      v.regrasp = found.front();
+      v.problem = make_planning_problem(problem.scene, with_regrasp(*problem.demonstration, v.regrasp), problem.validation);
+      PlannerParams vp = params_;
+      vp.seed = params_.seed + static_cast<std::uint64_t>(++tried);
+      v.search = std::make_unique<GuidedRrt>(scene, *v.problem.graph, *problem.checker, vp, shown, stop);
+      if (v.search->begin()) return true;
+    }
+    return false;
+  };
+  for (int k = 0; k < params_.regrasp_candidates; ++k) {
+    Variant v;
+    if (!next_variant(v)) break;
+    variants.push_back(std::move(v));
+  }
+  auto total = [&] {
+    long n = demonstrated.iterations() + retired;
+    for (const Variant& v : variants) n += v.search->iterations();
+    return n;
+  };
+  const long slice = std::max(1L, params_.regrasp_slice);
+  while (outcome == GuidedRrt::Outcome::Paused) {
+    others = total() - demonstrated.iterations();
+    outcome = demonstrated.advance(demonstrated.iterations() + slice);
+    if (outcome != GuidedRrt::Outcome::Paused || variants.empty()) break;
+    const long share = std::max(1L, slice / static_cast<long>(variants.size()));
+    for (size_t k = 0; k < variants.size() && outcome == GuidedRrt::Outcome::Paused; ++k) {
+      Variant& v = variants[k];
+      names.clear();
+      for (const GraphState& st : v.problem.graph->states) names.push_back(st.name);
+      others = total() - v.search->iterations();
+      const GuidedRrt::Outcome o = v.search->advance(v.search->iterations() + share);
+      if (o == GuidedRrt::Outcome::Stopped) outcome = o;
+      if (o == GuidedRrt::Outcome::Solved) {
+        const long iterations = total();
+        PlanResult r = v.search->finish(o);
+        r.iterations = iterations;
+        r.planning_time_s = std::chrono::duration<double>(Clock::now() - began).count();
+        r.graph = v.problem.graph;
+        r.regrasp = describe(scene, v.regrasp);
+        return r;
+      }
+      if (o == GuidedRrt::Outcome::Paused && v.search->iterations() >= params_.regrasp_budget) {
+        retired += v.search->iterations();
+        Variant fresh;
+        if (next_variant(fresh)) v = std::move(fresh);
+        else variants.erase(variants.begin() + static_cast<long>(k--));
+      }
+    }
+  }
+  others = total() - demonstrated.iterations();
+  const long iterations = total();
+  PlanResult r = demonstrated.finish(outcome);
+  r.iterations = iterations;
+  r.planning_time_s = std::chrono::duration<double>(Clock::now() - began).count();
+  if (!r.solved && tried > 0)
+    r.message += "; " + std::to_string(tried) + " regrasp placements tried beside the demonstration";
+  return r;
 }
 
 }  // namespace demoplan

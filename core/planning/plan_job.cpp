@@ -23,7 +23,7 @@ PlanReport run_plan_job(const PlanningProblem& problem, const PlannerSettings& s
       Path shorter = r.plan.path;
       ShortcutParams sp = settings.shortcutting;
       sp.seed = settings.planner.seed;
-      // The unguided planner's path lies in states of its own graph.
+      // The path of a planner that made its own graph (unguided, a guided regrasp) lies in its states.
       const ConstraintGraph& graph = r.plan.graph ? *r.plan.graph : *problem.graph;
       r.shortcut = shortcut_path(*problem.scene, graph, *problem.checker, shorter, sp);
       ValidationReport v = validate_path(*problem.scene, problem.validation, shorter);

@@ -43,6 +43,17 @@ struct PlannerParams {
   bool final_check = true;
   double check_delta = 0.001;
   double check_max_step = 0.01;
+  // Beyond the paper (guided planner, regrasp.h): after regrasp_after iterations without a path
+  // (0: never), the picks where the search stalls get regrasp placements the demonstration does
+  // not show. The demonstrated search goes on; regrasp_candidates variants, each the
+  // demonstration with one regrasp, are searched beside it (per round the demonstrated search
+  // gets regrasp_slice iterations, the variants as many together), and a variant that has had
+  // regrasp_budget iterations gives its place to a new placement. Paths found within
+  // regrasp_after iterations are exactly those found without it.
+  long regrasp_after = 10'000;
+  int regrasp_candidates = 4;
+  long regrasp_slice = 1'000;
+  long regrasp_budget = 6'000;
 };
 
 // One edge added since the previous snapshot, for drawing the trees grow.
@@ -85,6 +96,9 @@ struct PlanResult {
   // The graph whose states path.waypoints[k].state indexes when the planner made its own (the
   // unguided planner discovers its placements); null: the problem's.
   std::shared_ptr<const ConstraintGraph> graph;
+  // The regrasp the guided planner added to the demonstration to find the path (regrasp.h),
+  // e.g. "pick 2 (YCBV_03): put down at (0.310, -0.120, 0.797) m and taken again"; empty: none.
+  std::string regrasp;
 };
 
 // Whether a sampling planner must stop after `iterations`: cancelled (sets r.cancelled), the

@@ -6,6 +6,7 @@ PlanningProblem make_planning_problem(std::shared_ptr<const Scene> scene, const 
                                       ValidationTask validation) {
   PlanningProblem p;
   p.graph = std::make_shared<const ConstraintGraph>(build_constraint_graph(*scene, demo));
+  p.demonstration = std::make_shared<const Demonstration>(demo);
   p.checker = std::make_shared<const CollisionChecker>(*scene);
   p.scene = std::move(scene);
   p.validation = std::move(validation);

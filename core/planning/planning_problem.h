@@ -18,6 +18,8 @@ struct PlanningProblem {
   std::shared_ptr<const ConstraintGraph> graph;
   std::shared_ptr<const CollisionChecker> checker;  // of *scene
   ValidationTask validation;
+  // The demonstration the graph was built from; planners that change it (a regrasp) start here.
+  std::shared_ptr<const Demonstration> demonstration;
 };
 
 // Builds the constraint graph of `demo` and a collision checker for `scene`. Throws InputError

@@ -47,7 +47,8 @@ void PlanningController::onFinished(const PlanOutcome& o) {
     if (report.feasibility) r->infeasible_picks = report.feasibility->summary(doc_->scene());
     r->state_nodes = report.plan.state_nodes;
     r->cancelled = report.plan.cancelled;
-    // The unguided planner plans in states of its own making.
+    r->regrasp = report.plan.regrasp;
+    // The unguided planner, and the guided one with a regrasp, plan in states of their making.
     if (const auto& graph = report.plan.graph ? report.plan.graph : o.graph)
       for (const auto& st : graph->states) r->state_names.push_back(st.name);
     if (!report.shortcut_rejection.empty()) r->shortcut_note = "shortened path dropped: " + report.shortcut_rejection;

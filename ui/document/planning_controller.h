@@ -25,6 +25,7 @@ struct PlanResultData {
   std::vector<std::string> state_names;
   std::vector<size_t> state_nodes;
   std::string shortcut_note;
+  std::string regrasp;  // a regrasp the planner added to the demonstration (regrasp.h)
   bool cancelled = false;
 };
 

@@ -328,6 +328,9 @@ void PlannerPanel::onResult() {
   } else {
     msg = tr("<span style='color:%1'><b>Path found and valid.</b></span> See the Result panel.").arg(kOkColor.name());
   }
+  if (s.solved && !r->regrasp.empty())
+    msg += tr("<br>The demonstration could not be done holding the part one way; the path adds a regrasp: %1.")
+               .arg(QString::fromStdString(r->regrasp).toHtmlEscaped());
   if (!r->shortcut_note.empty()) msg += QStringLiteral("<br>") + QString::fromStdString(r->shortcut_note).toHtmlEscaped();
   message_->setText(msg);
 }
