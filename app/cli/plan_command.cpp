@@ -108,6 +108,10 @@ void add_planner_options(CLI::App& sub, PlannerSettings& s) {
   sub.add_option("--eta", p.eta_sample_tree, "probability of rooting a tree at a sampled transition")
       ->check(CLI::Range(0.0, 1.0))->capture_default_str();
   sub.add_option("--step", p.step, "tree growth step (joint space, rad)")->check(CLI::PositiveNumber)->capture_default_str();
+  sub.add_option("--regrasp-after", p.regrasp_after,
+                 "iterations without a path before the guided planner tries regrasps the demonstration does not "
+                 "show (0: never)")
+      ->check(CLI::NonNegativeNumber)->capture_default_str();
   sub.add_option("--resolution", p.resolution, "edge collision-check resolution (joint space, rad)")
       ->check(CLI::PositiveNumber)->capture_default_str();
 }

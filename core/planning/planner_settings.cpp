@@ -8,6 +8,7 @@ Json planner_settings_to_json(const PlannerSettings& s) {
               {"seed", p.seed},
               {"time_limit_s", p.time_limit},
               {"max_iterations", p.max_iterations},
+              {"regrasp_after", p.regrasp_after},
               {"eta", p.eta_sample_tree},
               {"step_rad", p.step},
               {"resolution_rad", p.resolution},
@@ -36,6 +37,11 @@ PlannerSettings planner_settings_from_json(const JsonField& j) {
     const double v = j["max_iterations"].number();
     if (v < 1) j["max_iterations"].fail("must be >= 1");
     p.max_iterations = static_cast<long>(v);
+  }
+  if (j.has("regrasp_after")) {
+    const double v = j["regrasp_after"].number();
+    if (v < 0) j["regrasp_after"].fail("must be >= 0 (0: never)");
+    p.regrasp_after = static_cast<long>(v);
   }
   if (j.has("eta")) {
     p.eta_sample_tree = j["eta"].number();

@@ -85,6 +85,14 @@ PlannerPanel::PlannerPanel(Document* doc, QWidget* parent) : QWidget(parent), do
   resolution_->setToolTip(tr("Motions are checked for collisions every this much joint motion (as the validator). "
                              "Smaller is safer and slower. Default %1 rad.").arg(defaults.resolution));
   addField(tr("Resolution"), resolution_);
+  regrasp_after_ = new QSpinBox(this);
+  regrasp_after_->setRange(0, 2'000'000'000);
+  regrasp_after_->setGroupSeparatorShown(true);
+  regrasp_after_->setSpecialValueText(tr("never"));
+  regrasp_after_->setToolTip(tr("After this many iterations without a path, the guided planner also tries putting "
+                                "a part down where the video does not and taking it again (a regrasp), for the "
+                                "picks where its search is stuck. 0: never. Default %L1.").arg(defaults.regrasp_after));
+  addField(tr("Regrasp after"), regrasp_after_);
   shortcut_ = new QCheckBox(tr("Shorten the path for"), this);
   shortcut_->setToolTip(tr("Replace detours by straight moves where they stay collision-free, after cutting out "
                            "any grasp that only puts a part back where it was; a shortened path that the "
@@ -95,8 +103,8 @@ PlannerPanel::PlannerPanel(Document* doc, QWidget* parent) : QWidget(parent), do
   shortcut_time_->setSuffix(QStringLiteral(" s"));
   shortcut_time_->setToolTip(tr("Time spent on straight shortcuts. Default 1 s. Cutting out a put-back grasp "
                                 "takes up to 1 s more each."));
-  form->addWidget(shortcut_, cell / 2 + 1, 0, 1, 2);
-  form->addWidget(shortcut_time_, cell / 2 + 1, 2, 1, 1);
+  form->addWidget(shortcut_, (cell + 1) / 2, 0, 1, 2);
+  form->addWidget(shortcut_time_, (cell + 1) / 2, 2, 1, 1);
   form->setColumnStretch(1, 1);
   form->setColumnStretch(3, 1);
   left->addLayout(form);
@@ -150,6 +158,7 @@ PlannerPanel::PlannerPanel(Document* doc, QWidget* parent) : QWidget(parent), do
   connect(seed_, &QSpinBox::valueChanged, this, &PlannerPanel::storeSettings);
   connect(planner_, &QComboBox::currentIndexChanged, this, &PlannerPanel::storeSettings);
   connect(max_iterations_, &QSpinBox::valueChanged, this, &PlannerPanel::storeSettings);
+  connect(regrasp_after_, &QSpinBox::valueChanged, this, &PlannerPanel::storeSettings);
   connect(shortcut_, &QCheckBox::toggled, this, &PlannerPanel::storeSettings);
   connect(defaults_, &QPushButton::clicked, this, [this] { doc_->planning()->setSettings(PlannerSettings{}); });
   connect(plan_, &QPushButton::clicked, this, &PlannerPanel::plan);
@@ -203,6 +212,7 @@ void PlannerPanel::loadSettings() {
   seed_->setValue(int(std::min<std::uint64_t>(s.planner.seed, 1'000'000'000)));
   time_limit_->setValue(s.planner.time_limit);
   max_iterations_->setValue(int(std::min<long>(s.planner.max_iterations, 2'000'000'000)));
+  regrasp_after_->setValue(int(std::min<long>(s.planner.regrasp_after, 2'000'000'000)));
   eta_->setValue(s.planner.eta_sample_tree);
   step_->setValue(s.planner.step);
   resolution_->setValue(s.planner.resolution);
@@ -219,6 +229,7 @@ void PlannerPanel::storeSettings() {
   s.planner.seed = std::uint64_t(seed_->value());
   s.planner.time_limit = time_limit_->value();
   s.planner.max_iterations = max_iterations_->value();
+  s.planner.regrasp_after = regrasp_after_->value();
   s.planner.eta_sample_tree = eta_->value();
   s.planner.step = step_->value();
   s.planner.resolution = resolution_->value();
@@ -231,7 +242,7 @@ void PlannerPanel::storeSettings() {
 void PlannerPanel::setRunning(bool running) {
   plan_->setEnabled(!running && doc_->hasProject() && doc_->issues().empty());
   cancel_->setEnabled(running);
-  for (QWidget* w : std::initializer_list<QWidget*>{planner_, seed_, time_limit_, max_iterations_, eta_, step_, resolution_, shortcut_,
+  for (QWidget* w : std::initializer_list<QWidget*>{planner_, seed_, time_limit_, max_iterations_, regrasp_after_, eta_, step_, resolution_, shortcut_,
                                                     shortcut_time_, defaults_})
     w->setEnabled(!running);
   if (!running) shortcut_time_->setEnabled(shortcut_->isChecked());

@@ -48,6 +48,7 @@ private:
   QSpinBox* seed_;
   QDoubleSpinBox* time_limit_;
   QSpinBox* max_iterations_;
+  QSpinBox* regrasp_after_;
   QDoubleSpinBox* eta_;
   QDoubleSpinBox* step_;
   QDoubleSpinBox* resolution_;
