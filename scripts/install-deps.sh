@@ -14,6 +14,8 @@ PACKAGES=(
   # OMPL's planners beside ours (bench-segments); its ompl_benchmark_statistics reads bench --ompl-log
   libompl-dev ompl-demos
   xvfb xauth
+  # the package test: lintian judges the .deb that CPack builds
+  lintian
 )
 
 missing=()
