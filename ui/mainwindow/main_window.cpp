@@ -711,9 +711,11 @@ void MainWindow::discardAutosaves() {
   for (const QFileInfo& f : dir.entryInfoList(QDir::Files)) QFile::remove(f.absoluteFilePath());
 }
 
-bool MainWindow::offerRecovery() {
+bool MainWindow::offerRecovery(const QString& only_for) {
   const std::optional<Autosave> a = pendingAutosave();
   if (!a || !options_.interactive) return false;
+  // Opening a given project: only its own autosave is offered, the others stay for later.
+  if (!only_for.isEmpty() && a->origin != QFileInfo(only_for).absoluteFilePath()) return false;
   QMessageBox box(QMessageBox::Question, tr("Recover unsaved work?"),
                   tr("demoplan did not close properly last time. Unsaved changes to %1 were autosaved %2.")
                       .arg(a->origin.isEmpty() ? tr("an untitled project") : QFileInfo(a->origin).fileName(),
@@ -732,6 +734,8 @@ bool MainWindow::offerRecovery() {
 void MainWindow::startUp(const QString& file) {
   QSettings settings;
   if (!file.isEmpty()) {
+    // After a crash the project's autosave is newer than the file: offer it first.
+    if (offerRecovery(file)) return;
     openProject(file);
     settings.setValue(QStringLiteral("firstStartDone"), true);
     return;

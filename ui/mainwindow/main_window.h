@@ -102,7 +102,7 @@ private:
   bool maybeSave();
   void newFromBenchmarkDialog();
   void removeAutosave();
-  bool offerRecovery();
+  bool offerRecovery(const QString& only_for = {});  // only_for: a project file; empty: any
   void showShortcuts();
   void showAbout();
   void addEventAtPlayhead(EventType type);
