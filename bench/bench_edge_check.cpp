@@ -1,7 +1,8 @@
 // Edge collision checks in the planner's order (StateValidity::segment_free: bisection, stop at
 // the first collision) against a walk from one end to the other, on the same edges of Panda
-// shelf_2 (issue 19, item 3). Planner edges: 0.3 rad from a collision-free configuration to a
-// collision-free one, checked every 0.005 rad; shortcut edges: 0.5-1.5 rad every 0.0025 rad.
+// shelf_2 (issue 19, item 3), drawn where the planner works: near a path it found. Planner
+// edges: 0.3 rad from a waypoint to a collision-free configuration, checked every 0.005 rad;
+// shortcut edges: straight cuts between two waypoints of one run of a state, every 0.0025 rad.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 
 #include "core/demo/benchmark_scene.h"
 #include "core/graph/state_validity.h"
+#include "core/planning/guided_planner.h"
 #include "core/project/benchmark_instance.h"
 
 using namespace demoplan;
@@ -16,6 +18,7 @@ using namespace demoplan;
 namespace {
 
 struct Edge {
+  int state;
   Eigen::VectorXd a, b;
 };
 
@@ -30,28 +33,27 @@ struct Fixture {
     const Eigen::VectorXd lo = m.lower_limits(), hi = m.upper_limits();
     const StateValidity validity(*problem.scene, *problem.graph, *problem.checker);
     CollisionData data = problem.checker->make_data();
-    const int state = problem.graph->start_state;
+    PlannerParams params;
+    params.seed = 1;
+    const std::vector<Waypoint> w = GuidedPlanner(params).solve(problem, StopCondition(60.0, nullptr), {}).path.waypoints;
     std::mt19937_64 rng(1);
     std::uniform_real_distribution<double> u(0, 1);
-    auto random_free = [&] {
-      Eigen::VectorXd q(m.nq);
-      do
-        for (int k = 0; k < m.nq; ++k) q[k] = lo[k] + u(rng) * (hi[k] - lo[k]);
-      while (!validity.configuration_free(state, q, data));
-      return q;
-    };
+    auto pick = [&] { return std::uniform_int_distribution<size_t>(0, w.size() - 1)(rng); };
     // Both ends free, as the planner and the shortcut check the ends before the edge.
-    auto edges = [&](std::vector<Edge>& out, double min_len, double max_len) {
-      while (out.size() < 512) {
-        const Eigen::VectorXd a = random_free();
-        Eigen::VectorXd d(m.nq);
-        for (int k = 0; k < m.nq; ++k) d[k] = u(rng) - 0.5;
-        const Eigen::VectorXd b = (a + d.normalized() * (min_len + (max_len - min_len) * u(rng))).cwiseMax(lo).cwiseMin(hi);
-        if (validity.configuration_free(state, b, data)) out.push_back({a, b});
-      }
-    };
-    edges(planner_edges, 0.3, 0.3);
-    edges(shortcut_edges, 0.5, 1.5);
+    while (planner_edges.size() < 512) {
+      const Waypoint& a = w[pick()];
+      Eigen::VectorXd d(m.nq);
+      for (int k = 0; k < m.nq; ++k) d[k] = u(rng) - 0.5;
+      const Eigen::VectorXd b = (a.q + d.normalized() * 0.3).cwiseMax(lo).cwiseMin(hi);
+      if (validity.configuration_free(a.state, b, data)) planner_edges.push_back({a.state, a.q, b});
+    }
+    for (int tries = 0; shortcut_edges.size() < 512 && tries < 100000; ++tries) {
+      size_t i = pick(), j = pick();
+      if (i > j) std::swap(i, j);
+      bool one_run = j > i + 1;
+      for (size_t k = i; k <= j && one_run; ++k) one_run = w[k].state == w[i].state;
+      if (one_run) shortcut_edges.push_back({w[i].state, w[i].q, w[j].q});
+    }
   }
 };
 
@@ -61,9 +63,9 @@ Fixture& fixture() {
 }
 
 // The samples of segment_free in order from a to b.
-bool walk_free(const PlanningProblem& p, int state, const Edge& e, double resolution, CollisionData& data) {
+bool walk_free(const PlanningProblem& p, const Edge& e, double resolution, CollisionData& data) {
   const int steps = static_cast<int>(std::ceil((e.b - e.a).norm() / resolution));
-  SceneState s = scene_state(*p.scene, *p.graph, state, e.a);
+  SceneState s = scene_state(*p.scene, *p.graph, e.state, e.a);
   for (int k = 1; k < steps; ++k) {
     s.q = e.a + (e.b - e.a) * (static_cast<double>(k) / steps);
     if (p.checker->in_collision(s, data)) return false;
@@ -77,11 +79,10 @@ void edge_check(benchmark::State& st, bool bisection, bool shortcut) {
   const double resolution = shortcut ? 0.0025 : 0.005;
   const StateValidity validity(*f.problem.scene, *f.problem.graph, *f.problem.checker, resolution);
   CollisionData data = f.problem.checker->make_data();
-  const int state = f.problem.graph->start_state;
   size_t i = 0, colliding = 0;
   for (auto _ : st) {
     const Edge& e = edges[i++ % edges.size()];
-    colliding += !(bisection ? validity.segment_free(state, e.a, e.b, data) : walk_free(f.problem, state, e, resolution, data));
+    colliding += !(bisection ? validity.segment_free(e.state, e.a, e.b, data) : walk_free(f.problem, e, resolution, data));
   }
   st.counters["edges_per_s"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
   st.counters["colliding_fraction"] = static_cast<double>(colliding) / static_cast<double>(st.iterations());
