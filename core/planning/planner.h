@@ -43,8 +43,9 @@ struct PlannerParams {
   bool final_check = true;
   double check_delta = 0.001;
   double check_max_step = 0.01;
-  // Beyond the paper: lazy edges (LazyRRT). A new node's configuration is checked, the link to
-  // it only when a found path uses it; a link that fails is cut as after a failed final check.
+  // Guided planner, beyond the paper: lazy edges (LazyRRT). A new node's configuration is
+  // checked, the link to it only when a found path uses it; a link that fails is cut as after a
+  // failed final check.
   // Most links never lie on a found path: median planning time 0.35-0.71x of checking every
   // link when it is made (docs/benchmarks.md).
   bool lazy_edges = true;
