@@ -31,7 +31,7 @@ int run_plan(const PlanOptions& o) {
   const ConstraintGraph& graph = *problem.graph;
   PlannerSettings settings = o.settings;
   settings.shortcut = !o.no_shortcut;
-  const PlanReport s = run_plan_job(problem, settings);
+  const PlanReport s = run_plan_job(problem, settings, {}, nullptr, {.validate_planner_path = false});
   const PlanResult& r = s.plan;
   const std::uint64_t seed = settings.planner.seed;
   nlohmann::json j{{"task", o.inputs.task},  {"robot", o.inputs.robot},    {"pose", o.inputs.pose},
@@ -123,6 +123,9 @@ Command register_plan_command(CLI::App& app) {
   add_planner_options(*sub, opts->settings);
   sub->add_flag("--no-shortcut", opts->no_shortcut, "keep the planner's path as found");
   sub->add_option("--shortcut-time", opts->settings.shortcutting.time_limit, "seconds spent shortening the path")
+      ->capture_default_str();
+  sub->add_option("--shortcut-failures", opts->settings.shortcutting.max_failures,
+                  "stop shortening after this many attempts in a row that shorten nothing")
       ->capture_default_str();
   sub->add_option("--out", opts->out, "write the path as JSON");
   sub->add_flag("--json", opts->json, "print one JSON object on stdout");

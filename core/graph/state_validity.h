@@ -15,7 +15,8 @@ public:
 
   bool configuration_free(int state, const Eigen::VectorXd& q, CollisionData& data,
                           CollisionPair* hit = nullptr) const;
-  // Samples strictly between the ends (the ends are assumed checked already).
+  // Samples strictly between the ends (the ends are assumed checked already), in bisection
+  // order: `hit` is the first collision found in that order, not the one nearest `a`.
   bool segment_free(int state, const Eigen::VectorXd& a, const Eigen::VectorXd& b,
                     CollisionData& data, CollisionPair* hit = nullptr) const;
   // Both ends in their states and the approach or retreat move in its placement state.

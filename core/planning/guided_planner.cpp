@@ -66,6 +66,12 @@ public:
         report(false);
       }
       result_.path = extract_path(chain_);
+      // Lazy edges: the links the path uses are checked now (PlannerParams::lazy_edges).
+      if (const int bad = first_colliding_link(chain_); bad >= 0) {
+        cut(chain_[static_cast<size_t>(bad)], chain_[static_cast<size_t>(bad) + 1]);
+        ++result_.rejected_links;
+        continue;
+      }
       // Beyond the paper: see PlannerParams::final_check.
       if (!params_.final_check) return Outcome::Solved;
       const int bad = check_path(result_.path);
@@ -74,9 +80,7 @@ public:
         return Outcome::Stopped;
       }
       if (bad < 0) return Outcome::Solved;
-      const int a = chain_[static_cast<size_t>(bad)], b = chain_[static_cast<size_t>(bad) + 1];
-      forbidden_.insert({std::min(a, b), std::max(a, b)});
-      roadmap_.cut(a, b);
+      cut(chain_[static_cast<size_t>(bad)], chain_[static_cast<size_t>(bad) + 1]);
       ++result_.rejected_paths;
     }
   }
@@ -155,6 +159,33 @@ private:
       record_edge(link_to, id);
     }
     return id;
+  }
+  static std::pair<int, int> key(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+  // Whether the straight link from `from` to `to` (both free) may be made: checked now, or with
+  // lazy edges remembered and checked when a found path uses it.
+  bool link_free(int state, const Eigen::VectorXd& from, const Eigen::VectorXd& to) {
+    return params_.lazy_edges || validity_.segment_free(state, from, to, data_);
+  }
+  void mark_lazy(int a, int b) {
+    if (params_.lazy_edges) unchecked_.insert(key(a, b));
+  }
+  // The first link of the chain that is unchecked and collides (its index), -1 when none; the
+  // links found free are marked checked.
+  int first_colliding_link(const std::vector<int>& chain) {
+    for (size_t k = 0; k + 1 < chain.size(); ++k) {
+      const auto it = unchecked_.find(key(chain[k], chain[k + 1]));
+      if (it == unchecked_.end()) continue;
+      const RoadmapNode &a = roadmap_.node(chain[k]), &b = roadmap_.node(chain[k + 1]);
+      unchecked_.erase(it);
+      if (!validity_.segment_free(a.state, a.q, b.q, data_)) return static_cast<int>(k);
+    }
+    return -1;
+  }
+  // A link a path cannot use: removed from the trees and never made again.
+  void cut(int a, int b) {
+    forbidden_.insert(key(a, b));
+    unchecked_.erase(key(a, b));
+    roadmap_.cut(a, b);
   }
   void record_edge(int a, int b) {
     if (!progress_) return;
@@ -242,8 +273,10 @@ private:
     const double len = d.norm();
     if (len < 1e-9) return;
     const Eigen::VectorXd q_step = len <= params_.step ? q_rand : Eigen::VectorXd(q_nn + d * (params_.step / len));
-    if (!validity_.configuration_free(state, q_step, data_) || !validity_.segment_free(state, q_nn, q_step, data_)) return;
-    attempt_link(add(q_step, state, roadmap_.node(nn).tree, nn, false));
+    if (!validity_.configuration_free(state, q_step, data_) || !link_free(state, q_nn, q_step)) return;
+    const int id = add(q_step, state, roadmap_.node(nn).tree, nn, false);
+    mark_lazy(nn, id);
+    attempt_link(id);
   }
 
   // Alg. 2: extend every other tree with nodes in this node's state towards it; merge on contact.
@@ -260,18 +293,20 @@ private:
         const Eigen::VectorXd d = q - from;
         const double len = d.norm();
         if (len <= params_.step) {
-          reached = !forbidden_.count({std::min(last, id), std::max(last, id)}) &&
-                    validity_.segment_free(state, from, q, data_);
+          reached = !forbidden_.count(key(last, id)) && link_free(state, from, q);
           break;
         }
         const Eigen::VectorXd next = from + d * (params_.step / len);
-        if (!validity_.configuration_free(state, next, data_) || !validity_.segment_free(state, from, next, data_)) break;
+        if (!validity_.configuration_free(state, next, data_) || !link_free(state, from, next)) break;
+        const int previous = last;
         last = add(next, state, roadmap_.node(last).tree, last, false);
+        mark_lazy(previous, last);
         report(false);  // a long extension must not hold back progress or cancel
         if (cancelled()) break;
       }
       if (reached) {
         roadmap_.add_link(last, id, false);
+        mark_lazy(last, id);
         record_edge(last, id);
         roadmap_.merge(roadmap_.node(last).tree, roadmap_.node(id).tree);
         if (connected()) return;
@@ -335,6 +370,7 @@ private:
   std::mt19937_64 rng_;
   std::vector<int> sampled_;  // collision-free samples per transition (repeated roots included)
   std::set<std::pair<int, int>> forbidden_;  // links cut after a failed path check
+  std::set<std::pair<int, int>> unchecked_;  // lazy links not collision-checked yet
   std::vector<std::vector<int>> roots_;  // per transition: the first node of each root
   PlanResult result_;  // filled as the search goes: message, rejected paths, the path found
   std::vector<int> chain_;

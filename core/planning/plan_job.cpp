@@ -16,9 +16,9 @@ PlanReport run_plan_job(const PlanningProblem& problem, const PlannerSettings& s
   r.plan = planner->solve(problem, StopCondition(settings.planner.time_limit, cancel), progress);
   const bool cancelled = r.plan.cancelled || (cancel && cancel->load());
   if (r.plan.solved) {
-    r.planner_validation = validate_path(*problem.scene, problem.validation, r.plan.path);
+    if (options.validate_planner_path)
+      r.planner_validation = validate_path(*problem.scene, problem.validation, r.plan.path);
     r.path = r.plan.path;
-    r.validation = r.planner_validation;
     if (settings.shortcut && settings.shortcutting.time_limit > 0 && !cancelled) {
       Path shorter = r.plan.path;
       ShortcutParams sp = settings.shortcutting;
@@ -34,6 +34,11 @@ PlanReport run_plan_job(const PlanningProblem& problem, const PlannerSettings& s
       } else {
         r.shortcut_rejection = v.message;
       }
+    }
+    if (!r.shortened) {
+      if (!options.validate_planner_path)
+        r.planner_validation = validate_path(*problem.scene, problem.validation, r.plan.path);
+      r.validation = r.planner_validation;
     }
   } else if (!cancelled && options.assess_on_failure) {
     r.feasibility = assess_problem(problem, settings);

@@ -17,7 +17,7 @@ namespace demoplan {
 struct PlanReport {
   std::string planner;  // the registered name
   PlanResult plan;      // the planner's own result; plan.path is its path, unshortened
-  ValidationReport planner_validation;  // of plan.path, when solved
+  ValidationReport planner_validation;  // of plan.path, when solved (see PlanJobOptions)
   Path path;            // the path returned: the shortened one when it validated, else plan.path
   bool shortened = false;
   ShortcutResult shortcut;
@@ -33,6 +33,9 @@ struct PlanReport {
 
 struct PlanJobOptions {
   bool assess_on_failure = true;  // false: the caller assesses (bench does it once per instance)
+  // false: the planner's own path is validated only when it is the one returned (a shortened
+  // path was dropped or not made); `plan` reports only the returned path.
+  bool validate_planner_path = true;
 };
 
 // Runs the planner settings.planner_name with a StopCondition of settings.planner.time_limit

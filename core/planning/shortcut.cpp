@@ -92,9 +92,11 @@ ShortcutResult shortcut_path(const Scene& scene, const ConstraintGraph& graph, c
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   if (params.detour_time > 0) r.detours_removed = remove_detours(scene, graph, validity, data, path, rng, params.detour_time);
   const auto t1 = Clock::now();  // the shortcut budget starts after the detours
-  while (r.attempts < params.max_attempts &&
+  long failures = 0;  // attempts since the last accepted cut
+  while (r.attempts < params.max_attempts && failures < params.max_failures &&
          std::chrono::duration<double>(Clock::now() - t1).count() < params.time_limit) {
     ++r.attempts;
+    ++failures;
     auto& w = path.waypoints;
     if (w.size() < 3) break;
     // Two points along the path, by arc length, in the same run of shortcuttable segments.
@@ -132,6 +134,7 @@ ShortcutResult shortcut_path(const Scene& scene, const ConstraintGraph& graph, c
     out.insert(out.end(), w.begin() + static_cast<long>(k2) + 1, w.end());
     w = std::move(out);
     ++r.accepted;
+    failures = 0;
   }
   r.length_after = path.robot_length();
   r.time_s = std::chrono::duration<double>(Clock::now() - t0).count();

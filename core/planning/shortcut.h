@@ -13,6 +13,9 @@ namespace demoplan {
 struct ShortcutParams {
   double time_limit = 1.0;   // s
   long max_attempts = 100000;
+  // Stop after this many attempts in a row shortened nothing: the path has converged, and the
+  // rest of time_limit would be spent on cuts that fail.
+  long max_failures = 200;
   // Collision-check step (joint space, rad): finer than the planner's, because a long cut can
   // run close along an obstacle.
   double resolution = 0.0025;

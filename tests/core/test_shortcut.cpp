@@ -98,3 +98,22 @@ TEST(Shortcut, CutsOutAGraspThatPutsThePartBackUnmoved) {
       EXPECT_TRUE(path.waypoints[k - 1].approach) << "grasp at waypoint " << k;
     }
 }
+
+TEST(Shortcut, StopsAfterAttemptsInARowThatShortenNothingAndStaysValid) {
+  BenchmarkProblem p("shelf_2", "ur5", 4);
+  PlannerParams pp;
+  pp.seed = 2;
+  const PlanResult r = p.plan(pp);
+  ASSERT_TRUE(r.solved) << r.message;
+  Path path = r.path;
+  ShortcutParams sp = shortcut_params();
+  sp.max_attempts = 100000;
+  sp.max_failures = 100;
+  const ShortcutResult s = shortcut_path(p.scene, p.graph, *p.checker, path, sp);
+  EXPECT_LT(s.attempts, sp.max_attempts);  // stopped by the failures, not the attempt count
+  EXPECT_GE(s.attempts, s.accepted + sp.max_failures);
+  EXPECT_LT(s.length_after, s.length_before);
+  const ValidationReport v = validate_path(p.scene, p.vtask, path);
+  EXPECT_TRUE(v.valid) << v.message;
+  EXPECT_EQ(v.grasps, 3);
+}
