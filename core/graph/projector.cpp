@@ -77,9 +77,12 @@ std::pair<double, double> ConstraintProjector::handle_residual(int transition, c
 TransitionSample ConstraintProjector::sample_on_transition(int transition, std::mt19937_64& rng) const {
   const GraphTransition& t = graph_.transitions[transition];
   Eigen::VectorXd seed = sample_configuration(t.from, rng);
-  if (base_sampler_ && std::uniform_real_distribution<double>(0.0, 1.0)(rng) >= options_.uniform_base_fraction) {
-    int link = -1;
-    const Pose target = handle_target(transition, &link);
+  int link = -1;
+  const Pose target = handle_target(transition, &link);
+  // A part on the robot's deck moves with the base: where the base stands does not change its
+  // reach, and the uniform seed keeps the arm's own configurations around the deck.
+  if (base_sampler_ && link < 0 &&
+      std::uniform_real_distribution<double>(0.0, 1.0)(rng) >= options_.uniform_base_fraction) {
     Eigen::VectorXd q = seed;
     if (base_sampler_->sample(target, link, q, rng)) return sample_from(transition, q, true, rng);
   }

@@ -24,7 +24,7 @@ struct ProjectorOptions {
   // A mobile base (mobile_base.h): this fraction of the random seeds stays uniform within the
   // joint limits, so nothing the base sampler misses becomes unreachable; the others come
   // from the base sampler. Robots without one draw every seed uniformly, as before.
-  double uniform_base_fraction = 0.25;
+  double uniform_base_fraction = 0.5;
   BaseSamplerOptions base;
 };
 
