@@ -27,7 +27,17 @@ ConstraintProjector::ConstraintProjector(const Scene& scene, const ConstraintGra
     IkOptions follow = options.ik;
     follow.max_attempts = 1;
     follow.max_iterations = options.follow_iterations;
-    solvers_[link] = {std::make_unique<IkSolver>(p, options.ik), std::make_unique<IkSolver>(p, follow)};
+    solvers_[link] = {std::make_unique<IkSolver>(p, options.ik), std::make_unique<IkSolver>(p, follow), nullptr};
+  }
+  if (const auto base = find_mobile_base(m)) {
+    std::vector<int> arm;
+    for (int j : graph.reach_joints)
+      if (j != base->x && j != base->y && j != base->yaw) arm.push_back(j);
+    Solvers& world = solvers_.at(-1);
+    IkProblem p = world.reach->problem();
+    p.active = arm;
+    world.reach_arm = std::make_unique<IkSolver>(p, options.ik);
+    base_sampler_ = std::make_unique<BaseSampler>(scene, *base, std::move(arm), options.base);
   }
 }
 
@@ -66,7 +76,17 @@ std::pair<double, double> ConstraintProjector::handle_residual(int transition, c
 
 TransitionSample ConstraintProjector::sample_on_transition(int transition, std::mt19937_64& rng) const {
   const GraphTransition& t = graph_.transitions[transition];
-  return sample_on_transition(transition, sample_configuration(t.from, rng), rng);
+  Eigen::VectorXd seed = sample_configuration(t.from, rng);
+  int link = -1;
+  const Pose target = handle_target(transition, &link);
+  // A part on the robot's deck moves with the base: where the base stands does not change its
+  // reach, and the uniform seed keeps the arm's own configurations around the deck.
+  if (base_sampler_ && link < 0 &&
+      std::uniform_real_distribution<double>(0.0, 1.0)(rng) >= options_.uniform_base_fraction) {
+    Eigen::VectorXd q = seed;
+    if (base_sampler_->sample(target, link, q, rng)) return sample_from(transition, q, true, rng);
+  }
+  return sample_from(transition, seed, false, rng);
 }
 
 IkResult ConstraintProjector::project(int transition, const Eigen::VectorXd& seed, std::mt19937_64& rng) const {
@@ -79,12 +99,31 @@ IkResult ConstraintProjector::project(int transition, const Eigen::VectorXd& see
 
 TransitionSample ConstraintProjector::sample_on_transition(int transition, const Eigen::VectorXd& seed,
                                                            std::mt19937_64& rng) const {
+  return sample_from(transition, seed, false, rng);
+}
+
+TransitionSample ConstraintProjector::sample_from(int transition, const Eigen::VectorXd& seed, bool base_placed,
+                                                  std::mt19937_64& rng) const {
   const GraphTransition& t = graph_.transitions[transition];
   TransitionSample out;
   out.transition = transition;
   out.state_from = t.from;
   out.state_to = t.to;
-  const IkResult contact = project(transition, seed, rng);
+  int target_link = -1;
+  const Pose handle = handle_target(transition, &target_link);
+  const IkSolver* arm_only = base_placed ? solvers_for(target_link).reach_arm.get() : nullptr;
+  IkResult contact;
+  if (arm_only) {
+    Eigen::VectorXd q0 = seed;
+    open_gripper(q0);
+    contact = arm_only->solve(handle, q0, rng);
+  }
+  // When the arm alone cannot turn the hand onto the handle, the base may help.
+  if (!contact.success) {
+    const int before = contact.iterations;
+    contact = project(transition, seed, rng);
+    contact.iterations += before;
+  }
   out.ik_attempts = contact.attempts;
   out.ik_iterations = contact.iterations;
   auto describe = [](const IkResult& r) {

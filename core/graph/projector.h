@@ -8,6 +8,7 @@
 #include <random>
 #include <string>
 
+#include "core/graph/base_sampler.h"
 #include "core/graph/constraint_graph.h"
 #include "core/model/inverse_kinematics.h"
 
@@ -20,6 +21,11 @@ struct ProjectorOptions {
   double approach_step = 0.01;  // m
   double straightness = 0.001;  // m
   int follow_iterations = 15;
+  // A mobile base (mobile_base.h): this fraction of the random seeds stays uniform within the
+  // joint limits, so nothing the base sampler misses becomes unreachable; the others come
+  // from the base sampler. Robots without one draw every seed uniformly, as before.
+  double uniform_base_fraction = 0.5;
+  BaseSamplerOptions base;
 };
 
 // The pair (q_from, q_to) of the paper for one transition, with the straight move between
@@ -46,7 +52,8 @@ public:
   // A random configuration of the state: uniform within the joint limits; grasp states keep
   // the gripper open.
   Eigen::VectorXd sample_configuration(int state, std::mt19937_64& rng) const;
-  // Samples the transition from a random seed configuration.
+  // Samples the transition from a random seed configuration: uniform, or for a mobile base
+  // mostly with the base placed from the handle's reach (base_sampler.h).
   TransitionSample sample_on_transition(int transition, std::mt19937_64& rng) const;
   // The same from a given seed (the nearest tree node, say).
   TransitionSample sample_on_transition(int transition, const Eigen::VectorXd& seed,
@@ -60,6 +67,8 @@ public:
   // (-1: world): the handle of the object at its placement.
   Pose handle_target(int transition, int* link) const;
 
+  // Null for a robot without a mobile base.
+  const BaseSampler* base_sampler() const { return base_sampler_.get(); }
   const ConstraintGraph& graph() const { return graph_; }
   const Scene& scene() const { return scene_; }
 
@@ -67,15 +76,22 @@ private:
   struct Solvers {
     std::unique_ptr<IkSolver> reach;   // from an arbitrary seed
     std::unique_ptr<IkSolver> follow;  // one short descent from a nearby configuration
+    // The arm alone, the base kept where the base sampler put it (mobile bases only): let loose,
+    // the base would trade the seed's clearance for a smaller step.
+    std::unique_ptr<IkSolver> reach_arm;
   };
   const Solvers& solvers_for(int link) const { return solvers_.at(link); }
   void open_gripper(Eigen::VectorXd& q) const;
+  // sample_on_transition from a seed; `base_placed`: the base sampler placed the base.
+  TransitionSample sample_from(int transition, const Eigen::VectorXd& seed, bool base_placed,
+                               std::mt19937_64& rng) const;
 
   const Scene& scene_;
   const ConstraintGraph& graph_;
   ProjectorOptions options_;
   std::map<int, Solvers> solvers_;  // by reference link (-1: world)
   Eigen::VectorXd lower_, upper_;
+  std::unique_ptr<BaseSampler> base_sampler_;
 };
 
 }  // namespace demoplan
