@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
                                       register_synth_command(app),
                                       register_extract_command(app), register_evaluate_command(app),
                                       register_export_command(app), register_new_command(app),
+                                      register_inspect_command(app),
                                       register_figure_command(app)};
   try {
     app.parse(argc, argv);

@@ -43,6 +43,16 @@ bool add_support_box(const JsonField& entry, const std::string& name, Scene& sce
   return true;
 }
 
+
+// Every handle and contact surface of an SRDF must sit on a link of its URDF.
+void check_srdf_links(const Srdf& srdf, const RobotModel& model, const std::string& urdf) {
+  for (const auto& h : srdf.handles)
+    if (model.link_index(h.link) < 0)
+      throw InputError(srdf.path, "handle '" + h.name + "' link", "link '" + h.link + "' is not in " + urdf);
+  for (const auto& c : srdf.contacts)
+    if (model.link_index(c.link) < 0)
+      throw InputError(srdf.path, "contact '" + c.name + "' link", "link '" + c.link + "' is not in " + urdf);
+}
 }  // namespace
 
 BenchmarkRobot load_benchmark_robot(const std::string& data_dir, const std::string& name) {
@@ -129,6 +139,7 @@ Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_
     fu.name = fs::path(f.urdf).stem().string();
     fu.model = load_urdf(f.urdf, urdf_options);
     fu.srdf = load_srdf(f.srdf);
+    check_srdf_links(fu.srdf, fu.model, f.urdf);
     forward_kinematics(fu.model, Eigen::VectorXd::Zero(fu.model.nq), Pose::Identity(), fu.link_poses);
     if (fu.model.nq != 0) throw InputError(f.urdf, "", "furniture must have only fixed joints");
     if (task.task_name == "tunnel" && f.kind == "tunnel")
@@ -149,6 +160,7 @@ Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_
     so.model_name = o.model_name;
     so.model = load_urdf(o.urdf, urdf_options);
     so.srdf = load_srdf(o.srdf);
+    check_srdf_links(so.srdf, so.model, o.urdf);
     if (so.model.nq != 0) throw InputError(o.urdf, "", "objects must be rigid (fixed joints only)");
     scene.objects.push_back(std::move(so));
   }

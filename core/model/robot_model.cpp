@@ -1,6 +1,7 @@
 #include "core/model/robot_model.h"
 
 #include <console_bridge/console.h>
+#include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <algorithm>
@@ -8,7 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 #include "core/error.h"
@@ -295,6 +298,34 @@ private:
 
 std::mutex console_mutex;  // console_bridge's output handler is process-wide
 
+// The links of a cycle of joints, parent first ("a -> b -> a"), or "" when the joints form none.
+// urdfdom only says "No root link found" for a cycle.
+std::string joint_cycle(const std::string& xml) {
+  TiXmlDocument doc;
+  doc.Parse(xml.c_str());
+  const TiXmlElement* robot = doc.Error() ? nullptr : doc.FirstChildElement("robot");
+  if (!robot) return {};
+  std::map<std::string, std::string> parent_of;  // child link -> parent link
+  for (auto* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
+    const TiXmlElement* p = j->FirstChildElement("parent");
+    const TiXmlElement* c = j->FirstChildElement("child");
+    if (p && c && p->Attribute("link") && c->Attribute("link")) parent_of[c->Attribute("link")] = p->Attribute("link");
+  }
+  for (const auto& entry : parent_of) {
+    std::set<std::string> seen;
+    std::string link = entry.first;
+    while (parent_of.count(link) && seen.insert(link).second) link = parent_of.at(link);
+    if (!seen.count(link)) continue;  // reached a root
+    std::string chain = link;         // on the cycle: walk it once more, child to parent
+    for (std::string l = parent_of.at(link); ; l = parent_of.at(l)) {
+      chain = l + " -> " + chain;
+      if (l == link) break;
+    }
+    return chain;
+  }
+  return {};
+}
+
 }  // namespace
 
 RobotModel parse_urdf(const std::string& xml, const std::string& source_path,
@@ -313,6 +344,8 @@ RobotModel parse_urdf(const std::string& xml, const std::string& source_path,
     // urdfdom drops an element it cannot parse and still returns a model: any logged error fails.
     if (!urdf || !handler.errors.empty()) {
       std::string reason = handler.errors.empty() ? "not a valid URDF" : handler.errors;
+      if (const std::string cycle = joint_cycle(xml); !cycle.empty())
+        reason = "the joints form a cycle (" + cycle + "); a URDF must be a tree";
       throw InputError(source_path, "URDF", reason);
     }
   }
