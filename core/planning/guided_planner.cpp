@@ -107,6 +107,8 @@ public:
   }
 
   long iterations() const { return iterations_; }
+  // A progress report if one is due: for work done beside the search (the regrasp sampling).
+  void keep_reporting() { report(false); }
 
   // The picks where the search is stuck: the first pick the start's tree reaches the beginning
   // of but not the end, and the last one the goal's tree reaches the end of but not the
@@ -426,7 +428,9 @@ PlanResult GuidedPlanner::solve(const PlanningProblem& problem, const StopCondit
   auto next_variant = [&](Variant& v) {
     while (dry < static_cast<int>(picks.size()) && !stop.should_stop()) {
       const int pick = picks[static_cast<size_t>(pick_turn++ % static_cast<int>(picks.size()))];
-      const std::vector<Regrasp> found = find_regrasps(scene, *problem.demonstration, *problem.checker, pick, 1, rng, stop);
+      // The demonstrated search keeps reporting while placements are sampled.
+      const std::vector<Regrasp> found = find_regrasps(scene, *problem.demonstration, *problem.checker, pick, 1, rng,
+                                                       stop, 200, 8, [&] { demonstrated.keep_reporting(); });
       if (found.empty()) {
         ++dry;  // no placement in this pick's attempts: do not search it again
         continue;

@@ -19,24 +19,33 @@ int grasp_event(const Demonstration& demo, int pick) {
   return -1;
 }
 
+// What the samplers below share: the checks, and what runs between samples.
+struct Sampling {
+  const ConstraintProjector& projector;
+  const StateValidity& validity;
+  CollisionData& data;
+  std::mt19937_64& rng;
+  const StopCondition& stop;
+  const std::function<void()>& tick;
+  int samples;
+};
+
 // Whether `transition` has a collision-free sample within `samples` draws.
-bool sampled_free(const ConstraintProjector& projector, const StateValidity& validity, CollisionData& data,
-                  int transition, int samples, std::mt19937_64& rng) {
-  for (int k = 0; k < samples; ++k) {
-    const TransitionSample s = projector.sample_on_transition(transition, rng);
-    if (s.ok && validity.transition_free(s, data)) return true;
+bool sampled_free(Sampling& s, int transition) {
+  for (int k = 0; k < s.samples && !s.stop.should_stop(); ++k) {
+    const TransitionSample t = s.projector.sample_on_transition(transition, s.rng);
+    const bool free = t.ok && s.validity.transition_free(t, s.data);
+    if (s.tick) s.tick();
+    if (free) return true;
   }
   return false;
 }
 
 // Whether some handle of graph pick k both grasps and releases collision-free.
-bool pick_possible(const ConstraintGraph& graph, const ConstraintProjector& projector, const StateValidity& validity,
-                   CollisionData& data, int k, int samples, std::mt19937_64& rng) {
+bool pick_possible(Sampling& s, const ConstraintGraph& graph, int k) {
   const GraphPick& p = graph.picks[static_cast<size_t>(k)];
   for (size_t w = 0; w < p.grasp_states.size(); ++w)
-    if (sampled_free(projector, validity, data, p.release[w], samples, rng) &&
-        sampled_free(projector, validity, data, p.grasp[w], samples, rng))
-      return true;
+    if (sampled_free(s, p.release[w]) && sampled_free(s, p.grasp[w])) return true;
   return false;
 }
 
@@ -63,7 +72,7 @@ Demonstration with_regrasp(const Demonstration& demo, const Regrasp& r) {
 
 std::vector<Regrasp> find_regrasps(const Scene& scene, const Demonstration& demo, const CollisionChecker& checker,
                                    int pick, int count, std::mt19937_64& rng, const StopCondition& stop,
-                                   int attempts, int samples) {
+                                   int attempts, int samples, const std::function<void()>& tick) {
   std::vector<Regrasp> found;
   const int g = grasp_event(demo, pick);
   if (g < 0) return found;
@@ -80,8 +89,8 @@ std::vector<Regrasp> find_regrasps(const Scene& scene, const Demonstration& demo
     const ConstraintProjector projector(scene, graph);
     const StateValidity validity(scene, graph, checker);
     // The two halves: into the new placement (graph pick `pick`) and out of it (pick + 1).
-    if (pick_possible(graph, projector, validity, data, pick, samples, rng) &&
-        pick_possible(graph, projector, validity, data, pick + 1, samples, rng))
+    Sampling sampling{projector, validity, data, rng, stop, tick, samples};
+    if (pick_possible(sampling, graph, pick) && pick_possible(sampling, graph, pick + 1) && !stop.should_stop())
       found.push_back(r);
   }
   return found;
