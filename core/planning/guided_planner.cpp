@@ -458,8 +458,9 @@ PlanResult GuidedPlanner::solve(const PlanningProblem& problem, const StopCondit
   const long slice = std::max(1L, params_.regrasp_slice);
   while (outcome == GuidedRrt::Outcome::Paused) {
     others = total() - demonstrated.iterations();
-    outcome = demonstrated.advance(demonstrated.iterations() + slice);
-    if (outcome != GuidedRrt::Outcome::Paused || variants.empty()) break;
+    // With no variant left the demonstrated search has the rest of the time to itself.
+    outcome = demonstrated.advance(variants.empty() ? std::numeric_limits<long>::max() : demonstrated.iterations() + slice);
+    if (outcome != GuidedRrt::Outcome::Paused) break;
     const long share = std::max(1L, slice / static_cast<long>(variants.size()));
     for (size_t k = 0; k < variants.size() && outcome == GuidedRrt::Outcome::Paused; ++k) {
       Variant& v = variants[k];
