@@ -38,7 +38,8 @@ int run_plan(const PlanOptions& o) {
                    {"planner", s.planner},
                    {"seed", seed},            {"from", o.inputs.from},      {"solved", r.solved},
                    {"planning_time_s", r.planning_time_s}, {"iterations", r.iterations},
-                   {"trees", r.trees},        {"nodes", r.nodes}};
+                   {"trees", r.trees},        {"nodes", r.nodes},
+                   {"rejected_links", r.rejected_links}};
   std::cerr << t.scene().name << ", " << s.planner << ", seed " << seed << ": "
             << (r.solved ? "solved" : "not solved: " + r.message) << " in " << r.planning_time_s << " s, "
             << r.iterations << " iterations, " << r.trees << " trees, " << r.nodes << " nodes\n";
@@ -112,6 +113,8 @@ void add_planner_options(CLI::App& sub, PlannerSettings& s) {
                  "iterations without a path before the guided planner tries regrasps the demonstration does not "
                  "show (0: never)")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
+  sub.add_flag_callback("--eager-edges", [&p] { p.lazy_edges = false; },
+                        "collision-check every tree edge when it is made, not when a found path uses it");
   sub.add_option("--resolution", p.resolution, "edge collision-check resolution (joint space, rad)")
       ->check(CLI::PositiveNumber)->capture_default_str();
 }

@@ -69,7 +69,7 @@ public:
       // Lazy edges: the links the path uses are checked now (PlannerParams::lazy_edges).
       if (const int bad = first_colliding_link(chain_); bad >= 0) {
         cut(chain_[static_cast<size_t>(bad)], chain_[static_cast<size_t>(bad) + 1]);
-        ++result_.rejected_links;
+        if (++result_.rejected_links >= params_.lazy_rejections) lazy_ = false;
         continue;
       }
       // Beyond the paper: see PlannerParams::final_check.
@@ -107,6 +107,8 @@ public:
   }
 
   long iterations() const { return iterations_; }
+  int rejected_links() const { return result_.rejected_links; }
+  const std::string& message() const { return result_.message; }  // why it stopped, once it has
   // A progress report if one is due: for work done beside the search (the regrasp sampling).
   void keep_reporting() { report(false); }
 
@@ -114,24 +116,19 @@ public:
   // of but not the end, and the last one the goal's tree reaches the end of but not the
   // beginning (one pick when both agree); every pick when neither says.
   std::vector<int> stalled_picks() const {
-    const int from_start = roadmap_.find(roadmap_.node(start_).tree), from_goal = roadmap_.find(roadmap_.node(goal_).tree);
-    auto reaches = [&](int state, int component) {
-      for (int group : roadmap_.groups_in(state))
-        if (roadmap_.find(group) == component) return true;
-      return false;
-    };
+    const std::vector<char> from_start = states_reached(start_), from_goal = states_reached(goal_);
     std::vector<int> out;
     const int n = static_cast<int>(graph_.picks.size());
     for (int k = 0; k < n; ++k) {
       const GraphPick& p = graph_.picks[static_cast<size_t>(k)];
-      if (reaches(p.from, from_start) && !reaches(p.to, from_start)) {
+      if (from_start[static_cast<size_t>(p.from)] && !from_start[static_cast<size_t>(p.to)]) {
         out.push_back(k);
         break;
       }
     }
     for (int k = n - 1; k >= 0; --k) {
       const GraphPick& p = graph_.picks[static_cast<size_t>(k)];
-      if (reaches(p.to, from_goal) && !reaches(p.from, from_goal)) {
+      if (from_goal[static_cast<size_t>(p.to)] && !from_goal[static_cast<size_t>(p.from)]) {
         if (std::find(out.begin(), out.end(), k) == out.end()) out.push_back(k);
         break;
       }
@@ -142,6 +139,24 @@ public:
   }
 
 private:
+  // The states a node's tree reaches over links known to be free: a lazy link not checked yet
+  // may collide, and a pick reached only through one is not reached.
+  std::vector<char> states_reached(int from) const {
+    std::vector<char> seen(roadmap_.size(), 0), states(graph_.states.size(), 0);
+    std::vector<int> stack{from};
+    seen[static_cast<size_t>(from)] = 1;
+    while (!stack.empty()) {
+      const int u = stack.back();
+      stack.pop_back();
+      states[static_cast<size_t>(roadmap_.node(u).state)] = 1;
+      for (const RoadmapLink& l : roadmap_.links(u))
+        if (!seen[static_cast<size_t>(l.to)] && !unchecked_.count(key(u, l.to))) {
+          seen[static_cast<size_t>(l.to)] = 1;
+          stack.push_back(l.to);
+        }
+    }
+    return states;
+  }
   PlanResult& fail(PlanResult& r, const std::string& why) {
     r.message = why;
     r.planning_time_s = elapsed();
@@ -166,10 +181,10 @@ private:
   // Whether the straight link from `from` to `to` (both free) may be made: checked now, or with
   // lazy edges remembered and checked when a found path uses it.
   bool link_free(int state, const Eigen::VectorXd& from, const Eigen::VectorXd& to) {
-    return params_.lazy_edges || validity_.segment_free(state, from, to, data_);
+    return lazy_ || validity_.segment_free(state, from, to, data_);
   }
   void mark_lazy(int a, int b) {
-    if (params_.lazy_edges) unchecked_.insert(key(a, b));
+    if (lazy_) unchecked_.insert(key(a, b));
   }
   // The first link of the chain that is unchecked and collides (its index), -1 when none; the
   // links found free are marked checked.
@@ -373,6 +388,7 @@ private:
   std::vector<int> sampled_;  // collision-free samples per transition (repeated roots included)
   std::set<std::pair<int, int>> forbidden_;  // links cut after a failed path check
   std::set<std::pair<int, int>> unchecked_;  // lazy links not collision-checked yet
+  bool lazy_ = params_.lazy_edges;  // whether new links are lazy (see PlannerParams::lazy_rejections)
   std::vector<std::vector<int>> roots_;  // per transition: the first node of each root
   PlanResult result_;  // filled as the search goes: message, rejected paths, the path found
   std::vector<int> chain_;
@@ -386,6 +402,153 @@ private:
   std::vector<std::pair<int, Eigen::VectorXd>> pending_roots_;
 };
 
+// The regrasp phase of the guided planner (PlannerParams::regrasp_after): the demonstration as
+// shown has not been solved in regrasp_after iterations. It goes on, and beside it variants are
+// searched where a stalled pick has a regrasp (regrasp.h). Per round the demonstrated search gets
+// regrasp_slice iterations and the variants as many together; a variant that has had
+// regrasp_budget iterations gives its place to a new placement. Deterministic: iteration counts,
+// no clocks, decide who runs.
+class RegraspRounds {
+public:
+  RegraspRounds(const PlanningProblem& problem, const PlannerParams& params, GuidedRrt& demonstrated,
+                const StopCondition& stop, const ProgressCallback& progress)
+      : problem_(problem), params_(params), demonstrated_(demonstrated), stop_(stop), progress_(progress),
+        rng_(params.seed), picks_(demonstrated.stalled_picks()) {
+    // A variant reports its own states' names and every search's iterations.
+    if (progress_)
+      shown_ = [this](const PlannerProgress& p) {
+        PlannerProgress q = p;
+        q.iterations += others_;
+        if (q.state_names.empty()) q.state_names = names_;
+        progress_(q);
+      };
+  }
+
+  // Runs the rounds until a search is solved or stopped.
+  PlanResult run(Clock::time_point began) {
+    for (int k = 0; k < params_.regrasp_candidates; ++k) {
+      Variant v;
+      if (!next_variant(v)) break;
+      variants_.push_back(std::move(v));
+    }
+    GuidedRrt::Outcome outcome = GuidedRrt::Outcome::Paused;
+    const long slice = std::max(1L, params_.regrasp_slice);
+    while (outcome == GuidedRrt::Outcome::Paused) {
+      others_ = total() - demonstrated_.iterations();
+      // With no variant left the demonstrated search has the rest of the time to itself.
+      outcome = demonstrated_.advance(variants_.empty() ? std::numeric_limits<long>::max()
+                                                        : demonstrated_.iterations() + slice);
+      if (outcome != GuidedRrt::Outcome::Paused) break;
+      const long share = std::max(1L, slice / static_cast<long>(variants_.size()));
+      for (size_t k = 0; k < variants_.size() && outcome == GuidedRrt::Outcome::Paused; ++k) {
+        Variant& v = variants_[k];
+        names_.clear();
+        for (const GraphState& st : v.problem.graph->states) names_.push_back(st.name);
+        others_ = total() - v.search->iterations();
+        const GuidedRrt::Outcome o = v.search->advance(v.search->iterations() + share);
+        if (o == GuidedRrt::Outcome::Solved) return solved_by(v, began);
+        if (o == GuidedRrt::Outcome::Stopped) {
+          outcome = o;
+          stopped_because_ = v.search->message();  // the time limit or cancel, met in a variant
+        }
+        if (o == GuidedRrt::Outcome::Paused && v.search->iterations() >= params_.regrasp_budget) {
+          retire(v);
+          Variant fresh;
+          if (next_variant(fresh)) v = std::move(fresh);
+          else variants_.erase(variants_.begin() + static_cast<long>(k--));
+        }
+      }
+    }
+    others_ = total() - demonstrated_.iterations();
+    const long iterations = total();
+    PlanResult r = demonstrated_.finish(outcome);
+    if (!stopped_because_.empty()) r.message = stopped_because_;
+    r.cancelled = r.cancelled || stop_.cancelled();
+    r.iterations = iterations;
+    r.rejected_links += rejected_links_;
+    for (const Variant& v : variants_) r.rejected_links += v.search->rejected_links();
+    r.planning_time_s = std::chrono::duration<double>(Clock::now() - began).count();
+    if (!r.solved && tried_ > 0)
+      r.message += "; " + std::to_string(tried_) + " regrasp placements tried beside the demonstration";
+    return r;
+  }
+
+private:
+  struct Variant {
+    Regrasp regrasp;
+    PlanningProblem problem;
+    std::unique_ptr<GuidedRrt> search;
+  };
+
+  // A variant with the next regrasp placement, the stalled picks taken in turn; false when none
+  // of them has one left.
+  bool next_variant(Variant& v) {
+    const Scene& scene = *problem_.scene;
+    while (dry_ < static_cast<int>(picks_.size()) && !stop_.should_stop()) {
+      const int pick = picks_[static_cast<size_t>(pick_turn_++ % static_cast<int>(picks_.size()))];
+      // The demonstrated search keeps reporting while placements are sampled.
+      const std::vector<Regrasp> found = find_regrasps(scene, *problem_.demonstration, *problem_.checker, pick, 1,
+                                                       rng_, stop_, 200, 8, [&] { demonstrated_.keep_reporting(); });
+      if (found.empty()) {
+        ++dry_;  // no placement in this pick's attempts: do not search it again
+        continue;
+      }
+      dry_ = 0;
+      v.regrasp = found.front();
+      v.problem = make_planning_problem(problem_.scene, with_regrasp(*problem_.demonstration, v.regrasp),
+                                        problem_.validation);
+      PlannerParams vp = params_;
+      vp.seed = params_.seed + static_cast<std::uint64_t>(++tried_);
+      // A variant searches where the demonstrated search stalled, among close obstacles: there
+      // lazy links mostly fail (tunnel_0/UR5/2: 6/10 solved with lazy variants, 10/10 eager).
+      vp.lazy_edges = false;
+      v.search = std::make_unique<GuidedRrt>(scene, *v.problem.graph, *problem_.checker, vp, shown_, stop_);
+      if (v.search->begin()) return true;
+    }
+    return false;
+  }
+
+  void retire(const Variant& v) {
+    retired_iterations_ += v.search->iterations();
+    rejected_links_ += v.search->rejected_links();
+  }
+
+  PlanResult solved_by(Variant& v, Clock::time_point began) {
+    const long iterations = total();
+    const int rejected = rejected_links_ + demonstrated_.rejected_links();
+    PlanResult r = v.search->finish(GuidedRrt::Outcome::Solved);
+    r.iterations = iterations;
+    r.rejected_links += rejected;
+    r.planning_time_s = std::chrono::duration<double>(Clock::now() - began).count();
+    r.graph = v.problem.graph;
+    r.regrasp = describe(*problem_.scene, v.regrasp);
+    return r;
+  }
+
+  // Iterations of every search so far.
+  long total() const {
+    long n = demonstrated_.iterations() + retired_iterations_;
+    for (const Variant& v : variants_) n += v.search->iterations();
+    return n;
+  }
+
+  const PlanningProblem& problem_;
+  const PlannerParams& params_;
+  GuidedRrt& demonstrated_;
+  const StopCondition& stop_;
+  const ProgressCallback& progress_;
+  std::mt19937_64 rng_;  // placements
+  const std::vector<int> picks_;
+  std::vector<Variant> variants_;
+  int tried_ = 0, pick_turn_ = 0, dry_ = 0;
+  long others_ = 0;  // iterations of the searches not reporting, for the progress shown
+  long retired_iterations_ = 0;
+  int rejected_links_ = 0;  // of retired variants
+  std::vector<std::string> names_;
+  ProgressCallback shown_;
+  std::string stopped_because_;
+};
+
 }  // namespace
 
 PlanResult GuidedPlanner::solve(const PlanningProblem& problem, const StopCondition& stop,
@@ -393,107 +556,11 @@ PlanResult GuidedPlanner::solve(const PlanningProblem& problem, const StopCondit
   const auto began = Clock::now();
   GuidedRrt demonstrated(*problem.scene, *problem.graph, *problem.checker, params_, progress, stop);
   if (!demonstrated.begin()) return demonstrated.finish(GuidedRrt::Outcome::Stopped);
-  GuidedRrt::Outcome outcome = demonstrated.advance(problem.demonstration && params_.regrasp_after > 0
-                                                        ? params_.regrasp_after
-                                                        : std::numeric_limits<long>::max());
+  const bool regrasps = problem.demonstration && params_.regrasp_after > 0;
+  const GuidedRrt::Outcome outcome =
+      demonstrated.advance(regrasps ? params_.regrasp_after : std::numeric_limits<long>::max());
   if (outcome != GuidedRrt::Outcome::Paused) return demonstrated.finish(outcome);
-
-  // The demonstration as shown has not been solved in regrasp_after iterations: go on with it,
-  // and beside it plan variants where a stalled pick has a regrasp (regrasp.h). Per round the
-  // demonstrated search gets regrasp_slice iterations and the variants as many together; a
-  // variant that has had regrasp_budget iterations gives its place to a new placement.
-  // Deterministic: iteration counts, no clocks, decide who runs.
-  const Scene& scene = *problem.scene;
-  struct Variant {
-    Regrasp regrasp;
-    PlanningProblem problem;
-    std::unique_ptr<GuidedRrt> search;
-  };
-  std::vector<Variant> variants;
-  std::mt19937_64 rng(params_.seed);
-  const std::vector<int> picks = demonstrated.stalled_picks();
-  int tried = 0, pick_turn = 0, dry = 0;
-  long others = 0;  // iterations of the searches not reporting, for the progress shown
-  long retired = 0;  // iterations of variants already replaced
-  std::vector<std::string> names;
-  ProgressCallback shown;  // a variant's progress: its own states' names, every search's iterations
-  if (progress)
-    shown = [&](const PlannerProgress& p) {
-      PlannerProgress q = p;
-      q.iterations += others;
-      if (q.state_names.empty()) q.state_names = names;
-      progress(q);
-    };
-  // A variant with the next regrasp placement, picks taken in turn; false when none is found.
-  auto next_variant = [&](Variant& v) {
-    while (dry < static_cast<int>(picks.size()) && !stop.should_stop()) {
-      const int pick = picks[static_cast<size_t>(pick_turn++ % static_cast<int>(picks.size()))];
-      // The demonstrated search keeps reporting while placements are sampled.
-      const std::vector<Regrasp> found = find_regrasps(scene, *problem.demonstration, *problem.checker, pick, 1, rng,
-                                                       stop, 200, 8, [&] { demonstrated.keep_reporting(); });
-      if (found.empty()) {
-        ++dry;  // no placement in this pick's attempts: do not search it again
-        continue;
-      }
-      dry = 0;
-      v.regrasp = found.front();
-      v.problem = make_planning_problem(problem.scene, with_regrasp(*problem.demonstration, v.regrasp), problem.validation);
-      PlannerParams vp = params_;
-      vp.seed = params_.seed + static_cast<std::uint64_t>(++tried);
-      v.search = std::make_unique<GuidedRrt>(scene, *v.problem.graph, *problem.checker, vp, shown, stop);
-      if (v.search->begin()) return true;
-    }
-    return false;
-  };
-  for (int k = 0; k < params_.regrasp_candidates; ++k) {
-    Variant v;
-    if (!next_variant(v)) break;
-    variants.push_back(std::move(v));
-  }
-  auto total = [&] {
-    long n = demonstrated.iterations() + retired;
-    for (const Variant& v : variants) n += v.search->iterations();
-    return n;
-  };
-  const long slice = std::max(1L, params_.regrasp_slice);
-  while (outcome == GuidedRrt::Outcome::Paused) {
-    others = total() - demonstrated.iterations();
-    // With no variant left the demonstrated search has the rest of the time to itself.
-    outcome = demonstrated.advance(variants.empty() ? std::numeric_limits<long>::max() : demonstrated.iterations() + slice);
-    if (outcome != GuidedRrt::Outcome::Paused) break;
-    const long share = std::max(1L, slice / static_cast<long>(variants.size()));
-    for (size_t k = 0; k < variants.size() && outcome == GuidedRrt::Outcome::Paused; ++k) {
-      Variant& v = variants[k];
-      names.clear();
-      for (const GraphState& st : v.problem.graph->states) names.push_back(st.name);
-      others = total() - v.search->iterations();
-      const GuidedRrt::Outcome o = v.search->advance(v.search->iterations() + share);
-      if (o == GuidedRrt::Outcome::Stopped) outcome = o;
-      if (o == GuidedRrt::Outcome::Solved) {
-        const long iterations = total();
-        PlanResult r = v.search->finish(o);
-        r.iterations = iterations;
-        r.planning_time_s = std::chrono::duration<double>(Clock::now() - began).count();
-        r.graph = v.problem.graph;
-        r.regrasp = describe(scene, v.regrasp);
-        return r;
-      }
-      if (o == GuidedRrt::Outcome::Paused && v.search->iterations() >= params_.regrasp_budget) {
-        retired += v.search->iterations();
-        Variant fresh;
-        if (next_variant(fresh)) v = std::move(fresh);
-        else variants.erase(variants.begin() + static_cast<long>(k--));
-      }
-    }
-  }
-  others = total() - demonstrated.iterations();
-  const long iterations = total();
-  PlanResult r = demonstrated.finish(outcome);
-  r.iterations = iterations;
-  r.planning_time_s = std::chrono::duration<double>(Clock::now() - began).count();
-  if (!r.solved && tried > 0)
-    r.message += "; " + std::to_string(tried) + " regrasp placements tried beside the demonstration";
-  return r;
+  return RegraspRounds(problem, params_, demonstrated, stop, progress).run(began);
 }
 
 }  // namespace demoplan

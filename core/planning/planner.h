@@ -58,8 +58,11 @@ struct PlannerParams {
   // checked, the link to it only when a found path uses it; a link that fails is cut as after a
   // failed final check.
   // Most links never lie on a found path: median planning time 0.35-0.71x of checking every
-  // link when it is made (docs/benchmarks.md).
+  // link when it is made (docs/benchmarks.md). Where obstacles are close that turns round:
+  // trees grow through walls and every path found is cut again. A search whose found paths
+  // have used lazy_rejections colliding links makes its further links checked.
   bool lazy_edges = true;
+  int lazy_rejections = 10;
 };
 
 // One edge added since the previous snapshot, for drawing the trees grow.

@@ -152,16 +152,10 @@ private slots:
 int main(int argc, char** argv) {
   if (argc == 3 && (QByteArray(argv[1]) == "--child-edit" || QByteArray(argv[1]) == "--child-save")) {
     // The child shares the parent's environment: settings and autosaves in its temporary home.
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    QSurfaceFormat::setDefaultFormat(format);
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("demoplan-tests"));
-    QApplication::setApplicationName(QStringLiteral("demoplan-tests"));
     const QString project = QString::fromLocal8Bit(argv[2]);
-    return QByteArray(argv[1]) == "--child-edit" ? childEditAndWait(project) : childSaveForever(project);
+    const bool edit = QByteArray(argv[1]) == "--child-edit";
+    return demoplan::ui::test::withTestApplication(
+        argc, argv, [&] { return edit ? childEditAndWait(project) : childSaveForever(project); });
   }
   CrashRecoveryTest test;
   return demoplan::ui::test::runTests(argc, argv, &test);

@@ -72,14 +72,10 @@ private:
   double max_gap_at_ms_ = 0;
 };
 
-inline int runTests(int argc, char** argv, QObject* test_object) {
-  // Settings, recent files and autosaves of the tests never touch the user's.
-  static QTemporaryDir home;
-  qputenv("XDG_CONFIG_HOME", (home.path() + QStringLiteral("/config")).toUtf8());
-  qputenv("XDG_DATA_HOME", (home.path() + QStringLiteral("/data")).toUtf8());
-  qputenv("XDG_RUNTIME_DIR", (home.path() + QStringLiteral("/runtime")).toUtf8());
-  QDir().mkpath(home.path() + QStringLiteral("/runtime"));
-  QFile::setPermissions(home.path() + QStringLiteral("/runtime"), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+// Runs `body` inside the QApplication every UI test uses: the GL format the 3D view needs and
+// the test's own organisation and application names.
+template <class Body>
+int withTestApplication(int argc, char** argv, Body body) {
   QSurfaceFormat format;
   format.setVersion(3, 3);
   format.setProfile(QSurfaceFormat::CoreProfile);
@@ -88,7 +84,18 @@ inline int runTests(int argc, char** argv, QObject* test_object) {
   QApplication app(argc, argv);
   QApplication::setOrganizationName(QStringLiteral("demoplan-tests"));
   QApplication::setApplicationName(QStringLiteral("demoplan-tests"));
-  return QTest::qExec(test_object, argc, argv);
+  return body();
+}
+
+inline int runTests(int argc, char** argv, QObject* test_object) {
+  // Settings, recent files and autosaves of the tests never touch the user's.
+  static QTemporaryDir home;
+  qputenv("XDG_CONFIG_HOME", (home.path() + QStringLiteral("/config")).toUtf8());
+  qputenv("XDG_DATA_HOME", (home.path() + QStringLiteral("/data")).toUtf8());
+  qputenv("XDG_RUNTIME_DIR", (home.path() + QStringLiteral("/runtime")).toUtf8());
+  QDir().mkpath(home.path() + QStringLiteral("/runtime"));
+  QFile::setPermissions(home.path() + QStringLiteral("/runtime"), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+  return withTestApplication(argc, argv, [&] { return QTest::qExec(test_object, argc, argv); });
 }
 
 }  // namespace demoplan::ui::test
