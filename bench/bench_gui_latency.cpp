@@ -3,7 +3,7 @@
 // 1 ms timer on the GUI thread records the gaps between its ticks. A gap is time in which a
 // click or a repaint would have waited. Needs an X server for the 3D view: run under xvfb-run.
 //
-//   xvfb-run -a -s '-screen 0 1280x800x24' build/bench/bench_gui_latency \
+//   xvfb-run -a -s '-screen 0 1280x800x24' build/bench/bench_gui_latency
 //       [--task shelf_2] [--robot panda] [--pose 4] [--seeds 1-5] [--hide-3d]
 //
 // --hide-3d hides the 3D view: what is left is the GUI thread's own work, without the cost of

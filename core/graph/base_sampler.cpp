@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <mutex>
+#include <sstream>
 
 #include "core/geometry/box_overlap.h"
 #include "core/model/inverse_kinematics.h"
@@ -42,38 +45,63 @@ double best_yaw(const Eigen::Matrix3d& from, const Eigen::Matrix3d& to, double* 
 
 }  // namespace
 
+// The reach map: the gripper frame relative to the body for random arm configurations, sorted
+// by height. It depends on the robot, its gripper frame and the options only, so the samplers of
+// one robot share one, built once per process (immutable, as the meshes' BVHs): the regrasp
+// search makes a projector, and with it a sampler, for every placement it tries.
+std::shared_ptr<const std::vector<BaseSampler::Reach>> BaseSampler::reach_map(const Scene& scene, const MobileBase& base,
+                                                                              const std::vector<int>& arm,
+                                                                              const BaseSamplerOptions& options) {
+  const RobotModel& m = scene.robot.model;
+  std::ostringstream key;
+  key << std::hexfloat << &m << ' ' << base.body << ' ' << scene.robot.gripper_link << ' ' << options.seed << ' '
+      << options.reach_samples;
+  for (const int j : arm) key << ' ' << j;
+  const Eigen::Matrix4d frame = scene.robot.gripper().pose.matrix();
+  for (int k = 0; k < 16; ++k) key << ' ' << frame(k);
+  static std::mutex mutex;
+  static std::map<std::string, std::weak_ptr<const std::vector<Reach>>> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (auto shared = cache[key.str()].lock()) return shared;
+
+  IkProblem p;
+  p.model = &m;
+  p.root_link = base.body;
+  p.link = scene.robot.gripper_link;
+  p.link_T_frame = scene.robot.gripper().pose;
+  const IkSolver fk(p);
+  const Eigen::VectorXd lower = m.lower_limits(), upper = m.upper_limits();
+  std::mt19937_64 rng(options.seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m.nq);
+  auto reach = std::make_shared<std::vector<Reach>>();
+  reach->reserve(static_cast<size_t>(options.reach_samples));
+  for (int k = 0; k < options.reach_samples; ++k) {
+    Reach r;
+    r.arm.resize(static_cast<long>(arm.size()));
+    for (size_t i = 0; i < arm.size(); ++i) {
+      const int j = arm[i];
+      const double lo = std::isfinite(lower[j]) ? lower[j] : -M_PI;
+      const double hi = std::isfinite(upper[j]) ? upper[j] : M_PI;
+      q[j] = r.arm[static_cast<long>(i)] = lo + u(rng) * (hi - lo);
+    }
+    r.gripper = fk.frame_pose(q);
+    reach->push_back(std::move(r));
+  }
+  std::stable_sort(reach->begin(), reach->end(), [](const Reach& a, const Reach& b) {
+    return a.gripper.translation().z() < b.gripper.translation().z();
+  });
+  cache[key.str()] = reach;
+  return reach;
+}
+
 BaseSampler::BaseSampler(const Scene& scene, const MobileBase& base, std::vector<int> arm, BaseSamplerOptions options)
     : scene_(scene), base_(base), arm_(std::move(arm)), options_(options) {
   const RobotModel& m = scene.robot.model;
   lower_ = m.lower_limits();
   upper_ = m.upper_limits();
 
-  // The reach map: the gripper frame relative to the body for random arm configurations.
-  IkProblem p;
-  p.model = &m;
-  p.root_link = base_.body;
-  p.link = scene.robot.gripper_link;
-  p.link_T_frame = scene.robot.gripper().pose;
-  const IkSolver fk(p);
-  std::mt19937_64 rng(options_.seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(m.nq);
-  reach_.reserve(static_cast<size_t>(options_.reach_samples));
-  for (int k = 0; k < options_.reach_samples; ++k) {
-    Reach r;
-    r.arm.resize(static_cast<long>(arm_.size()));
-    for (size_t i = 0; i < arm_.size(); ++i) {
-      const int j = arm_[i];
-      const double lo = std::isfinite(lower_[j]) ? lower_[j] : -M_PI;
-      const double hi = std::isfinite(upper_[j]) ? upper_[j] : M_PI;
-      q[j] = r.arm[static_cast<long>(i)] = lo + u(rng) * (hi - lo);
-    }
-    r.gripper = fk.frame_pose(q);
-    reach_.push_back(std::move(r));
-  }
-  std::stable_sort(reach_.begin(), reach_.end(), [](const Reach& a, const Reach& b) {
-    return a.gripper.translation().z() < b.gripper.translation().z();
-  });
+  reach_ = reach_map(scene, base_, arm_, options_);
 
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(m.nq);
   body_height_ = base_.body_pose(m, zero, scene.robot.base).translation().z();
@@ -107,9 +135,9 @@ BaseSampler::BaseSampler(const Scene& scene, const MobileBase& base, std::vector
 
 std::pair<size_t, size_t> BaseSampler::height_window(double z) const {
   auto below = [](const Reach& r, double h) { return r.gripper.translation().z() < h; };
-  const auto lo = std::lower_bound(reach_.begin(), reach_.end(), z - options_.height_tolerance, below);
-  const auto hi = std::lower_bound(reach_.begin(), reach_.end(), z + options_.height_tolerance, below);
-  return {static_cast<size_t>(lo - reach_.begin()), static_cast<size_t>(hi - reach_.begin())};
+  const auto lo = std::lower_bound(reach_->begin(), reach_->end(), z - options_.height_tolerance, below);
+  const auto hi = std::lower_bound(reach_->begin(), reach_->end(), z + options_.height_tolerance, below);
+  return {static_cast<size_t>(lo - reach_->begin()), static_cast<size_t>(hi - reach_->begin())};
 }
 
 bool BaseSampler::sample(const Pose& target, int link, Eigen::VectorXd& q, std::mt19937_64& rng) const {
@@ -134,7 +162,7 @@ bool BaseSampler::sample(const Pose& target, int link, Eigen::VectorXd& q, std::
   double best_error = std::numeric_limits<double>::infinity();
   int cleared = 0;
   for (int attempt = 0; attempt < options_.attempts * options_.candidates && cleared < options_.candidates; ++attempt) {
-    const Reach& r = reach_[pick(rng)];
+    const Reach& r = (*reach_)[pick(rng)];
     for (size_t i = 0; i < arm_.size(); ++i) candidate[arm_[i]] = r.arm[static_cast<long>(i)];
     double error = 0.0;
     if (on_body) {

@@ -9,6 +9,7 @@
 // furniture are taken: box bounds, exact for the benchmark's boxed furniture.
 // Without furniture or handle in reach the caller keeps its uniform seed.
 #include <cstdint>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -38,7 +39,7 @@ public:
   bool clear_of_furniture(const Eigen::VectorXd& q) const;
 
   const MobileBase& base() const { return base_; }
-  size_t reach_size() const { return reach_.size(); }
+  size_t reach_size() const { return reach_->size(); }
 
 private:
   struct Reach {
@@ -57,7 +58,11 @@ private:
   MobileBase base_;
   std::vector<int> arm_;
   BaseSamplerOptions options_;
-  std::vector<Reach> reach_;  // by gripper height
+  static std::shared_ptr<const std::vector<Reach>> reach_map(const Scene& scene, const MobileBase& base,
+                                                             const std::vector<int>& arm,
+                                                             const BaseSamplerOptions& options);
+
+  std::shared_ptr<const std::vector<Reach>> reach_;  // by gripper height, shared (reach_map)
   std::vector<Box> furniture_, robot_;
   double body_height_ = 0.0;  // of the body frame above the world's origin
   Eigen::VectorXd lower_, upper_;

@@ -94,7 +94,9 @@ TEST(TunnelUr5Pose2, GraspAndReleaseOfTheSecondPickLieOnOppositeShoulderBranches
               << release_sign[1] << " +, " << release_sign[-1] << " -\n";
     for (const auto& [sign, n] : grasp_sign) {
       grasps += n;
-      if (n > 0) EXPECT_EQ(release_sign[sign], 0) << name << ": a grasp and a release on the same branch";
+      if (n > 0) {
+        EXPECT_EQ(release_sign[sign], 0) << name << ": a grasp and a release on the same branch";
+      }
     }
     for (const auto& [sign, n] : release_sign) releases += n;
   }
