@@ -16,10 +16,13 @@ Json read_json_file(const std::string& path) {
   if (!in) throw InputError(path, "", "cannot open file");
   try {
     return Json::parse(in);
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {
+    // A syntax error (parse_error) or a number too large for a double (out_of_range 406,
+    // "1e999": found by fuzzing, it used to escape as an uncaught exception).
     std::string what = e.what();
     // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> keep the tail.
-    if (auto pos = what.find("parse error"); pos != std::string::npos) what = what.substr(pos);
+    if (auto pos = what.find("] "); what.rfind("[json.exception.", 0) == 0 && pos != std::string::npos)
+      what = what.substr(pos + 2);
     throw InputError(path, "", "invalid JSON: " + what);
   }
 }
