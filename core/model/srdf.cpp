@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/io/one_line.h"
 
 namespace demoplan {
 
@@ -70,7 +71,7 @@ public:
 
 private:
   [[noreturn]] void fail(const std::string& field, const std::string& reason) const {
-    throw InputError(source_, field, reason);
+    throw InputError(source_, one_line(field), one_line(reason));
   }
 
   std::string attribute(const TiXmlElement& e, const char* name, const std::string& where) const {
