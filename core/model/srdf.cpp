@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/io/one_line.h"
+#include "core/model/xml_text.h"
 
 namespace demoplan {
 
@@ -46,7 +47,8 @@ public:
 
   Srdf parse(const std::string& xml) {
     TiXmlDocument doc;
-    doc.Parse(xml.c_str());
+    const std::string text = padded_for_tinyxml(xml);
+    doc.Parse(text.c_str());
     if (doc.Error()) {
       fail(doc.ErrorRow() > 0 ? "line " + std::to_string(doc.ErrorRow()) : "", std::string("XML error: ") + doc.ErrorDesc());
     }
