@@ -67,6 +67,13 @@ MarkerBoard board_from_json(const JsonField& b) {
   if (!(board.marker_length > 0) || board.marker_separation < 0) b.fail("marker_length must be > 0, marker_separation >= 0");
   board.first_id = b.has("first_id") ? b["first_id"].integer() : 0;
   if (board.first_id < 0) b["first_id"].fail("must be >= 0");
+  // The board's markers take the ids first_id, first_id + 1, ...: they must exist in the
+  // dictionary (OpenCV's GridBoard::create would otherwise be asked for billions of markers).
+  const long long ids = static_cast<long long>(board.markers_x) * board.markers_y + board.first_id;
+  const int dictionary_size = marker_dictionary(board.dictionary)->bytesList.rows;
+  if (ids > dictionary_size)
+    b.fail("markers_x x markers_y markers from first_id need ids up to " + std::to_string(ids - 1) + "; " +
+           board.dictionary + " has ids 0.." + std::to_string(dictionary_size - 1));
   board.world_T_board = pose_from_json(b["world_T_board"]);
   return board;
 }
