@@ -106,8 +106,14 @@ Camera load_opencv_camera(const std::string& path) {
   cv::FileStorage fs;
   try {
     if (!fs.open(path, cv::FileStorage::READ)) throw InputError(path, "", "cannot open the calibration file");
+  } catch (const InputError&) {
+    throw;
   } catch (const cv::Exception& e) {
     throw InputError(path, "", std::string("not an OpenCV calibration file: ") + one_line(e.err));
+  } catch (const std::exception& e) {
+    // OpenCV 4.6's YAML parser also lets std::length_error out of some malformed files
+    // (found by fuzz_camera_yaml).
+    throw InputError(path, "", std::string("not an OpenCV calibration file: ") + one_line(e.what()));
   }
   auto node = [&](std::initializer_list<const char*> names) -> cv::FileNode {
     for (const char* n : names)
@@ -126,8 +132,12 @@ Camera load_opencv_camera(const std::string& path) {
     const cv::FileNode w = node({"image_width"}), h = node({"image_height"});
     if (w.empty() || h.empty()) throw InputError(path, "image_width", "missing image_width / image_height");
     c.image_size = {positive_int(w, path, "image_width"), positive_int(h, path, "image_height")};
+  } catch (const InputError&) {
+    throw;
   } catch (const cv::Exception& e) {
     throw InputError(path, kname, std::string("unreadable: ") + one_line(e.err));
+  } catch (const std::exception& e) {
+    throw InputError(path, kname, std::string("unreadable: ") + one_line(e.what()));
   }
   if (K.rows != 3 || K.cols != 3) throw InputError(path, kname, "must be a 3x3 matrix");
   K.convertTo(K, CV_64F);
