@@ -57,13 +57,14 @@ total=0
 for t in "${targets[@]}"; do
   bin="$BUILD_DIR/tests/fuzz/fuzz_$t"
   [ -x "$bin" ] || { echo "fuzz: no target fuzz_$t" >&2; exit 2; }
-  mkdir -p "$OUT/$t/corpus" "$OUT/$t/crashes"
+  mkdir -p "$OUT/$t/corpus" "$OUT/$t/crashes" "$OUT/$t/tmp"
   cp tests/fuzz/corpus/"$t"/* "$OUT/$t/corpus/"
   mode=()
   [ "${FUZZ_KEEP_GOING:-0}" = 1 ] && mode=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
   rc=0
   # shellcheck disable=SC2046
-  "$bin" "${mode[@]}" -max_total_time="$SECONDS_EACH" -max_len="$(max_len "$t")" -timeout=10 -rss_limit_mb=2048 \
+  # The targets' input files go to TMPDIR: the run's folder, also when a crash skips their cleanup.
+  TMPDIR="$OUT/$t/tmp" "$bin" "${mode[@]}" -max_total_time="$SECONDS_EACH" -max_len="$(max_len "$t")" -timeout=10 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$OUT/$t/crashes/" $(dict "$t") "$OUT/$t/corpus" >"$OUT/$t/log" 2>&1 || rc=$?
   # Executions: libFuzzer's final statistics, or in fork mode the last status line's count.
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$OUT/$t/log" | grep -o '[0-9]*$' | tail -1 || true)
