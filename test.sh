@@ -13,7 +13,20 @@ fi
 ./scripts/build.sh
 cd "${BUILD_DIR:-build}"
 # GL and widget tests need an X server; xvfb-run provides one on a headless machine.
+run=()
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null; then
-  exec xvfb-run -a -s '-screen 0 1280x800x24' ctest --output-on-failure -j"$(nproc)" "$@"
+  run=(xvfb-run -a -s '-screen 0 1280x800x24')
 fi
-exec ctest --output-on-failure -j"$(nproc)" "$@"
+status=0
+"${run[@]}" ctest --output-on-failure -j"$(nproc)" "$@" || status=$?
+cd ..
+# A short fuzz run of every parser (60 s in all; scripts/fuzz.sh, tests/fuzz/README.md), after
+# ctest and whatever ctest said; either failing fails the script. FUZZ_TOTAL_SECONDS=0 skips it;
+# the sanitizer run skips it (the fuzz targets have their own ASan + UBSan build).
+fuzz_total="${FUZZ_TOTAL_SECONDS:-60}"
+if [ -z "${DEMOPLAN_SANITIZE:-}" ] && [ "$fuzz_total" -gt 0 ]; then
+  n=$(ls tests/fuzz/fuzz_*.cpp | wc -l)
+  each=$((fuzz_total / n)); [ "$each" -ge 1 ] || each=1
+  ./scripts/fuzz.sh "$each" || status=1
+fi
+exit "$status"

@@ -16,6 +16,8 @@ PACKAGES=(
   xvfb xauth
   # the package test: lintian judges the .deb that CPack builds
   lintian
+  # the parsers' fuzz targets (scripts/fuzz.sh, tests/fuzz): clang 14 and its libFuzzer
+  clang-14 libfuzzer-14-dev
 )
 
 missing=()

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "core/io/one_line.h"
 
 namespace demoplan {
 
@@ -16,10 +17,13 @@ Json read_json_file(const std::string& path) {
   if (!in) throw InputError(path, "", "cannot open file");
   try {
     return Json::parse(in);
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {
+    // A syntax error (parse_error) or a number too large for a double (out_of_range 406,
+    // "1e999": found by fuzzing, it used to escape as an uncaught exception).
     std::string what = e.what();
     // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> keep the tail.
-    if (auto pos = what.find("parse error"); pos != std::string::npos) what = what.substr(pos);
+    if (auto pos = what.find("] "); what.rfind("[json.exception.", 0) == 0 && pos != std::string::npos)
+      what = what.substr(pos + 2);
     throw InputError(path, "", "invalid JSON: " + what);
   }
 }
@@ -39,14 +43,14 @@ void write_json_file_atomic(const std::string& path, const Json& value, int inde
 }
 
 void JsonField::fail(const std::string& reason) const {
-  throw InputError(file_, path_.empty() ? "(top level)" : path_, reason);
+  throw InputError(file_, path_.empty() ? "(top level)" : one_line(path_), one_line(reason));
 }
 
 JsonField JsonField::operator[](const std::string& key) const {
   if (!value_->is_object()) fail("must be an object");
   auto it = value_->find(key);
   const std::string p = path_.empty() ? key : path_ + "." + key;
-  if (it == value_->end()) throw InputError(file_, p, "missing");
+  if (it == value_->end()) throw InputError(file_, one_line(p), "missing");
   return JsonField(*it, file_, p);
 }
 
@@ -54,7 +58,7 @@ JsonField JsonField::operator[](size_t index) const {
   if (!value_->is_array()) fail("must be an array");
   const std::string p = path_ + "[" + std::to_string(index) + "]";
   if (index >= value_->size())
-    throw InputError(file_, p, "missing (array has " + std::to_string(value_->size()) + " entries)");
+    throw InputError(file_, one_line(p), "missing (array has " + std::to_string(value_->size()) + " entries)");
   return JsonField((*value_)[index], file_, p);
 }
 

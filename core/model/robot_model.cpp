@@ -15,6 +15,8 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/io/one_line.h"
+#include "core/model/xml_text.h"
 
 namespace demoplan {
 
@@ -113,6 +115,8 @@ bool finite(const urdf::Pose& p) {
 
 class UrdfBuilder {
 public:
+  static constexpr int kMaxTreeDepth = 1000;
+
   UrdfBuilder(const std::string& source, const UrdfOptions& options)
       : source_(source), options_(options), dir_(fs::absolute(fs::path(source)).parent_path()) {}
 
@@ -128,10 +132,14 @@ public:
 
 private:
   [[noreturn]] void fail(const std::string& field, const std::string& reason) const {
-    throw InputError(source_, field, reason);
+    throw InputError(source_, one_line(field), one_line(reason));
   }
 
-  void add_link(const urdf::Link& ul, int parent_joint) {
+  void add_link(const urdf::Link& ul, int parent_joint, int depth = 0) {
+    // Recursion, one level per link down the tree: bounded, so that neither a malformed model
+    // nor a very long chain can overflow the stack.
+    if (depth > kMaxTreeDepth)
+      fail("link '" + ul.name + "'", "the kinematic tree is deeper than " + std::to_string(kMaxTreeDepth) + " links");
     const int index = static_cast<int>(model_.links.size());
     model_.links.push_back({});
     {
@@ -161,7 +169,7 @@ private:
                                 [&](const auto& l) { return l->name == uj->child_link_name; });
       if (child == ul.child_links.end()) fail("joint '" + uj->name + "'", "child link not found");
       model_.joints[ji].child_link = static_cast<int>(model_.links.size());
-      add_link(**child, ji);
+      add_link(**child, ji, depth + 1);
     }
   }
 
@@ -298,18 +306,27 @@ private:
 
 std::mutex console_mutex;  // console_bridge's output handler is process-wide
 
-// The links of a cycle of joints, parent first ("a -> b -> a"), or "" when the joints form none.
-// urdfdom only says "No root link found" for a cycle.
-std::string joint_cycle(const std::string& xml) {
+// Why the joints do not form a tree: a link that is the child of two joints, or a cycle of joints
+// (its links, parent first: "a -> b -> a"); "" when they form one. urdfdom only says "No root
+// link found" for a cycle, and accepts a link with two parents, building a model whose links
+// hold each other (found by fuzz_urdf: the builder below recursed until the stack overflowed).
+std::string tree_error(const std::string& xml) {
   TiXmlDocument doc;
-  doc.Parse(xml.c_str());
+  const std::string text = padded_for_tinyxml(xml);
+  doc.Parse(text.c_str());
   const TiXmlElement* robot = doc.Error() ? nullptr : doc.FirstChildElement("robot");
   if (!robot) return {};
   std::map<std::string, std::string> parent_of;  // child link -> parent link
+  std::map<std::string, std::string> joint_of;   // child link -> its joint
   for (auto* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
     const TiXmlElement* p = j->FirstChildElement("parent");
     const TiXmlElement* c = j->FirstChildElement("child");
-    if (p && c && p->Attribute("link") && c->Attribute("link")) parent_of[c->Attribute("link")] = p->Attribute("link");
+    if (!p || !c || !p->Attribute("link") || !c->Attribute("link")) continue;
+    const std::string child = c->Attribute("link"), name = j->Attribute("name") ? j->Attribute("name") : "";
+    if (auto [it, inserted] = joint_of.emplace(child, name); !inserted)
+      return "link '" + child + "' is the child of two joints ('" + it->second + "' and '" + name +
+             "'); a URDF must be a tree";
+    parent_of[child] = p->Attribute("link");
   }
   for (const auto& entry : parent_of) {
     std::set<std::string> seen;
@@ -321,7 +338,7 @@ std::string joint_cycle(const std::string& xml) {
       chain = l + " -> " + chain;
       if (l == link) break;
     }
-    return chain;
+    return "the joints form a cycle (" + chain + "); a URDF must be a tree";
   }
   return {};
 }
@@ -330,23 +347,25 @@ std::string joint_cycle(const std::string& xml) {
 
 RobotModel parse_urdf(const std::string& xml, const std::string& source_path,
                       const UrdfOptions& options) {
+  // Joints that do not form a tree are refused before urdfdom sees them: urdfdom refuses a cycle
+  // too ("No root link found") but leaks its links, which hold each other, and accepts a link with
+  // two parents (found by fuzz_urdf).
+  if (const std::string error = tree_error(xml); !error.empty())
+    throw InputError(source_path, "URDF", one_line(error));
   urdf::ModelInterfaceSharedPtr urdf;
   {
     std::lock_guard lock(console_mutex);
     CapturingHandler handler;
     console_bridge::useOutputHandler(&handler);
     try {
-      urdf = urdf::parseURDF(xml);
+      urdf = urdf::parseURDF(padded_for_tinyxml(xml));
     } catch (const std::exception& e) {
       if (handler.errors.empty()) handler.errors = e.what();
     }
     console_bridge::restorePreviousOutputHandler();
     // urdfdom drops an element it cannot parse and still returns a model: any logged error fails.
     if (!urdf || !handler.errors.empty()) {
-      std::string reason = handler.errors.empty() ? "not a valid URDF" : handler.errors;
-      if (const std::string cycle = joint_cycle(xml); !cycle.empty())
-        reason = "the joints form a cycle (" + cycle + "); a URDF must be a tree";
-      throw InputError(source_path, "URDF", reason);
+      throw InputError(source_path, "URDF", handler.errors.empty() ? "not a valid URDF" : one_line(handler.errors));
     }
   }
   return UrdfBuilder(source_path, options).build(*urdf);

@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/io/one_line.h"
+#include "core/model/xml_text.h"
 
 namespace demoplan {
 
@@ -45,7 +47,8 @@ public:
 
   Srdf parse(const std::string& xml) {
     TiXmlDocument doc;
-    doc.Parse(xml.c_str());
+    const std::string text = padded_for_tinyxml(xml);
+    doc.Parse(text.c_str());
     if (doc.Error()) {
       fail(doc.ErrorRow() > 0 ? "line " + std::to_string(doc.ErrorRow()) : "", std::string("XML error: ") + doc.ErrorDesc());
     }
@@ -70,7 +73,7 @@ public:
 
 private:
   [[noreturn]] void fail(const std::string& field, const std::string& reason) const {
-    throw InputError(source_, field, reason);
+    throw InputError(source_, one_line(field), one_line(reason));
   }
 
   std::string attribute(const TiXmlElement& e, const char* name, const std::string& where) const {

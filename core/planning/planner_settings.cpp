@@ -36,11 +36,13 @@ PlannerSettings planner_settings_from_json(const JsonField& j) {
   if (j.has("max_iterations")) {
     const double v = j["max_iterations"].number();
     if (v < 1) j["max_iterations"].fail("must be >= 1");
+    if (v > 1e15) j["max_iterations"].fail("is out of range (at most 1e15)");  // beyond long: UB
     p.max_iterations = static_cast<long>(v);
   }
   if (j.has("regrasp_after")) {
     const double v = j["regrasp_after"].number();
     if (v < 0) j["regrasp_after"].fail("must be >= 0 (0: never)");
+    if (v > 1e15) j["regrasp_after"].fail("is out of range (at most 1e15)");
     p.regrasp_after = static_cast<long>(v);
   }
   if (j.has("eta")) {

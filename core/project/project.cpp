@@ -1,5 +1,6 @@
 #include "core/project/project.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -55,11 +56,15 @@ ResultSummary result_from_json(const JsonField& j, const std::string& file) {
   r.message = j["message"].string();
   r.validated_against = j.has("validated_against") ? j["validated_against"].string() : "";
   r.planning_time_s = j["planning_time_s"].number();
+  // Counts stored as JSON numbers: converted only within range (a double beyond the range of
+  // long or size_t makes the conversion undefined behaviour).
   const double iterations = j["iterations"].number();
+  if (std::abs(iterations) > 1e15) j["iterations"].fail("is out of range");
   r.iterations = static_cast<long>(iterations);
   r.trees = j["trees"].integer();
   const double nodes = j["nodes"].number();
   if (nodes < 0) j["nodes"].fail("must be >= 0");
+  if (nodes > 1e15) j["nodes"].fail("is out of range");
   r.nodes = static_cast<size_t>(nodes);
   r.length_robot_rad = j["length_robot_rad"].number();
   r.length_object_m = j["length_object_m"].number();

@@ -1,10 +1,12 @@
 #include "perception/camera/camera_model.h"
 
+#include <cmath>
 #include <filesystem>
 
 #include <opencv2/calib3d.hpp>
 
 #include "core/error.h"
+#include "core/io/one_line.h"
 #include "perception/io/pose_json.h"
 #include "perception/markers/marker_dictionary.h"
 
@@ -20,6 +22,37 @@ bool valid_distortion_count(size_t n) { return n == 0 || n == 4 || n == 5 || n =
 void check_intrinsics(const Camera& c, const std::string& path, const std::string& field) {
   if (c.image_size.width <= 0 || c.image_size.height <= 0) throw InputError(path, "image_size", "must be positive");
   if (!(c.fx > 0) || !(c.fy > 0)) throw InputError(path, field, "focal lengths must be > 0");
+  if (!std::isfinite(c.fx) || !std::isfinite(c.fy) || !std::isfinite(c.cx) || !std::isfinite(c.cy))
+    throw InputError(path, field, "fx, fy, cx and cy must be finite numbers");
+}
+
+// An !!opencv-matrix node (rows, cols, dt, data) of at most `max_elements` numbers, read here
+// rather than by OpenCV's `node >> mat`, which allocates rows x cols before it looks at the data:
+// a calibration file saying "cols: 2147483647" asked for 16 GB (found by fuzz_camera_yaml).
+cv::Mat small_matrix(const cv::FileNode& n, const std::string& path, const std::string& field, int max_elements) {
+  if (!n.isMap()) throw InputError(path, field, "must be an !!opencv-matrix (rows, cols, dt, data)");
+  const cv::FileNode rows = n["rows"], cols = n["cols"], data = n["data"];
+  if (!rows.isInt() || !cols.isInt()) throw InputError(path, field, "rows and cols must be integers");
+  const int r = static_cast<int>(rows), c = static_cast<int>(cols);
+  if (r < 1 || c < 1 || r > max_elements || c > max_elements || r * c > max_elements)
+    throw InputError(path, field, "must have at most " + std::to_string(max_elements) + " elements (rows x cols)");
+  if (!data.isSeq() || static_cast<int>(data.size()) != r * c)
+    throw InputError(path, field, "data must hold rows x cols = " + std::to_string(r * c) + " numbers");
+  cv::Mat m(r, c, CV_64F);
+  int i = 0;
+  for (const cv::FileNode& v : data) {
+    if (!v.isInt() && !v.isReal()) throw InputError(path, field, "data[" + std::to_string(i) + "] is not a number");
+    const double x = v.isInt() ? static_cast<double>(static_cast<int>(v)) : static_cast<double>(v);
+    if (!std::isfinite(x)) throw InputError(path, field, "data[" + std::to_string(i) + "] is not a finite number");
+    m.at<double>(i / c, i % c) = x;
+    ++i;
+  }
+  return m;
+}
+
+int positive_int(const cv::FileNode& n, const std::string& path, const std::string& field) {
+  if (!n.isInt() || static_cast<int>(n) <= 0) throw InputError(path, field, "must be a positive integer");
+  return static_cast<int>(n);
 }
 
 MarkerBoard board_from_json(const JsonField& b) {
@@ -34,6 +67,13 @@ MarkerBoard board_from_json(const JsonField& b) {
   if (!(board.marker_length > 0) || board.marker_separation < 0) b.fail("marker_length must be > 0, marker_separation >= 0");
   board.first_id = b.has("first_id") ? b["first_id"].integer() : 0;
   if (board.first_id < 0) b["first_id"].fail("must be >= 0");
+  // The board's markers take the ids first_id, first_id + 1, ...: they must exist in the
+  // dictionary (OpenCV's GridBoard::create would otherwise be asked for billions of markers).
+  const long long ids = static_cast<long long>(board.markers_x) * board.markers_y + board.first_id;
+  const int dictionary_size = marker_dictionary(board.dictionary)->bytesList.rows;
+  if (ids > dictionary_size)
+    b.fail("markers_x x markers_y markers from first_id need ids up to " + std::to_string(ids - 1) + "; " +
+           board.dictionary + " has ids 0.." + std::to_string(dictionary_size - 1));
   board.world_T_board = pose_from_json(b["world_T_board"]);
   return board;
 }
@@ -66,8 +106,14 @@ Camera load_opencv_camera(const std::string& path) {
   cv::FileStorage fs;
   try {
     if (!fs.open(path, cv::FileStorage::READ)) throw InputError(path, "", "cannot open the calibration file");
+  } catch (const InputError&) {
+    throw;
   } catch (const cv::Exception& e) {
-    throw InputError(path, "", std::string("not an OpenCV calibration file: ") + e.err);
+    throw InputError(path, "", std::string("not an OpenCV calibration file: ") + one_line(e.err));
+  } catch (const std::exception& e) {
+    // OpenCV 4.6's YAML parser also lets std::length_error out of some malformed files
+    // (found by fuzz_camera_yaml).
+    throw InputError(path, "", std::string("not an OpenCV calibration file: ") + one_line(e.what()));
   }
   auto node = [&](std::initializer_list<const char*> names) -> cv::FileNode {
     for (const char* n : names)
@@ -80,13 +126,18 @@ Camera load_opencv_camera(const std::string& path) {
   try {
     const cv::FileNode kn = node({"camera_matrix", "cameraMatrix", "K"});
     if (kn.empty()) throw InputError(path, kname, "missing (also looked for cameraMatrix, K)");
-    kn >> K;
-    if (const cv::FileNode dn = node({"distortion_coefficients", "dist_coeffs", "distCoeffs", "D"}); !dn.empty()) dn >> D;
+    K = small_matrix(kn, path, kname, 9);
+    if (const cv::FileNode dn = node({"distortion_coefficients", "dist_coeffs", "distCoeffs", "D"}); !dn.empty())
+      D = small_matrix(dn, path, "distortion_coefficients", 14);
     const cv::FileNode w = node({"image_width"}), h = node({"image_height"});
     if (w.empty() || h.empty()) throw InputError(path, "image_width", "missing image_width / image_height");
-    c.image_size = {static_cast<int>(w), static_cast<int>(h)};
+    c.image_size = {positive_int(w, path, "image_width"), positive_int(h, path, "image_height")};
+  } catch (const InputError&) {
+    throw;
   } catch (const cv::Exception& e) {
-    throw InputError(path, kname, std::string("unreadable: ") + e.err);
+    throw InputError(path, kname, std::string("unreadable: ") + one_line(e.err));
+  } catch (const std::exception& e) {
+    throw InputError(path, kname, std::string("unreadable: ") + one_line(e.what()));
   }
   if (K.rows != 3 || K.cols != 3) throw InputError(path, kname, "must be a 3x3 matrix");
   K.convertTo(K, CV_64F);

@@ -92,6 +92,13 @@ TracksFile load_tracks_file(const std::string& path) {
   t.extrinsics = ex["extrinsics"].string();
   if (ex.has("tracker")) t.tracker = ex["tracker"].string();  // files written before trackers were named lack it
   const JsonField objects = root["objects"];
+  // Every object gets a sample per frame, in memory: "frames": 2147483647 asked for 400 GB
+  // (found by fuzzing). Two million samples per track set is an hour of video at 30 fps with 18
+  // parts.
+  constexpr double kMaxSamples = 2e6;
+  if (static_cast<double>(frames) * static_cast<double>(objects.size()) > kMaxSamples)
+    root["frames"].fail("frames x objects = " + std::to_string(frames) + " x " + std::to_string(objects.size()) +
+                        " is more than the 2000000 pose samples a tracks file may hold");
   for (PoseTracks* tracks : {&t.raw, &t.smoothed}) {
     tracks->fps = fps;
     for (size_t i = 0; i < objects.size(); ++i) {

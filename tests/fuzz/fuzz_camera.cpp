@@ -1,0 +1,8 @@
+// libFuzzer target: a demoplan-camera JSON file (perception/camera/camera_model.h, load_camera).
+// Any input must load or throw InputError naming the file (tests/fuzz/fuzz_input.h).
+#include "perception/camera/camera_model.h"
+#include "tests/fuzz/fuzz_input.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  return demoplan::fuzz::run(data, size, "input.json", [](const std::string& file) { demoplan::perception::load_camera(file); });
+}
