@@ -102,7 +102,7 @@ std::string JsonField::string() const {
 
 Eigen::VectorXd JsonField::vector() const {
   Eigen::VectorXd v(size());
-  for (size_t i = 0; i < v.size(); ++i) v[i] = (*this)[i].number();
+  for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = (*this)[static_cast<size_t>(i)].number();
   return v;
 }
 
