@@ -53,6 +53,8 @@ std::shared_ptr<const std::vector<BaseSampler::Reach>> BaseSampler::reach_map(co
                                                                               const std::vector<int>& arm,
                                                                               const BaseSamplerOptions& options) {
   const RobotModel& m = scene.robot.model;
+  // Keyed by the model's address: a sampler holds its scene, so while a map is in use its model
+  // lives and no other model can take that address.
   std::ostringstream key;
   key << std::hexfloat << &m << ' ' << base.body << ' ' << scene.robot.gripper_link << ' ' << options.seed << ' '
       << options.reach_samples;
@@ -62,7 +64,9 @@ std::shared_ptr<const std::vector<BaseSampler::Reach>> BaseSampler::reach_map(co
   static std::mutex mutex;
   static std::map<std::string, std::weak_ptr<const std::vector<Reach>>> cache;
   const std::lock_guard<std::mutex> lock(mutex);
-  if (auto shared = cache[key.str()].lock()) return shared;
+  std::erase_if(cache, [](const auto& entry) { return entry.second.expired(); });
+  std::weak_ptr<const std::vector<Reach>>& slot = cache[key.str()];
+  if (auto shared = slot.lock()) return shared;
 
   IkProblem p;
   p.model = &m;
@@ -91,7 +95,7 @@ std::shared_ptr<const std::vector<BaseSampler::Reach>> BaseSampler::reach_map(co
   std::stable_sort(reach->begin(), reach->end(), [](const Reach& a, const Reach& b) {
     return a.gripper.translation().z() < b.gripper.translation().z();
   });
-  cache[key.str()] = reach;
+  slot = reach;
   return reach;
 }
 
