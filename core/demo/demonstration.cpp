@@ -147,6 +147,15 @@ Json demonstration_to_json(const Demonstration& d) {
     events.push_back(std::move(ev));
   }
   j["events"] = events;
+  if (!d.doubts.empty()) {
+    Json doubts = Json::array();
+    for (const auto& x : d.doubts)
+      doubts.push_back({{"object", x.object >= 0 && x.object < static_cast<int>(d.object_ids.size()) ? d.object_ids[x.object] : ""},
+                        {"first_frame", x.first_frame},
+                        {"last_frame", x.last_frame},
+                        {"message", x.message}});
+    j["doubts"] = doubts;
+  }
   return j;
 }
 
@@ -185,6 +194,22 @@ Demonstration demonstration_from_json(const Json& json, const std::string& path)
       for (const auto& id : d.object_ids) ev.pose_frames.push_back(frames.has(id) ? frames[id].string() : "");
     }
     d.events.push_back(std::move(ev));
+  }
+  if (root.has("doubts")) {
+    const JsonField doubts = root["doubts"];
+    for (size_t i = 0; i < doubts.size(); ++i) {
+      const JsonField x = doubts[i];
+      DetectionDoubt doubt;
+      const std::string obj = x["object"].string();
+      doubt.object = d.object_index(obj);
+      if (doubt.object < 0) x["object"].fail("'" + obj + "' is not in objects");
+      doubt.first_frame = x["first_frame"].integer();
+      doubt.last_frame = x["last_frame"].integer();
+      if (doubt.first_frame < 0 || doubt.last_frame < doubt.first_frame)
+        x["last_frame"].fail("the frames must satisfy 0 <= first_frame <= last_frame");
+      doubt.message = x["message"].string();
+      d.doubts.push_back(std::move(doubt));
+    }
   }
   return d;
 }

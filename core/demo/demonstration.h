@@ -28,11 +28,21 @@ struct ContactEvent {
   }
 };
 
+// Something the event detection could not decide, over a frame range of one object, for the
+// operator to check on the timeline (a rest seen at two places with no carry between, a carry
+// that ends nowhere). A doubt does not stop planning; the operator dismisses it by deleting it.
+struct DetectionDoubt {
+  int object = -1;  // index into Demonstration::object_ids
+  int first_frame = 0, last_frame = 0;  // inclusive
+  std::string message;
+};
+
 struct Demonstration {
   std::string task;  // the scene it refers to, e.g. benchmark task "shelf_1"
   double fps = 30.0;
   std::vector<std::string> object_ids;
   std::vector<ContactEvent> events;  // ordered by frame
+  std::vector<DetectionDoubt> doubts;  // from event detection, ordered by first frame
 
   int object_index(const std::string& id) const;  // -1 when absent
   double time_s(int frame) const { return frame / fps; }
