@@ -17,6 +17,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Longest run of samples a rest's centre and cost are computed from: longer rests are
 // subsampled evenly, which keeps the segmentation quadratic in the video's length.
 constexpr int kMaxSamples = 96;
+// Frames around a carrier's start or stop searched for where a carry onto or off it ends.
+constexpr int kRideSearch = 6;
 
 bool rigid(const Pose& p) {
   if (!p.matrix().allFinite()) return false;
@@ -301,7 +303,8 @@ struct Ride {
 
 // Whether part `o`'s motion [first, last] is, over some frames, a ride on another part's
 // motion: the two move over overlapping frames by about the same displacement. The carrier is
-// a part outside the plan (a tray) if one qualifies, else the lower one.
+// a part outside the plan (a tray) if one qualifies, else a planning part moving with it: parts
+// that move together ride on a support, tracked or not (the hand carries one part at a time).
 std::optional<Ride> find_ride(int o, const TrackSegment& motion, const std::vector<Track>& tracks,
                               const std::vector<std::vector<TrackSegment>>& segs, const PoseTracks& pose_tracks,
                               const TrackSegmentationOptions& opt) {
@@ -310,7 +313,7 @@ std::optional<Ride> find_ride(int o, const TrackSegment& motion, const std::vect
   for (size_t c = 0; c < segs.size(); ++c) {
     if (static_cast<int>(c) == o) continue;
     for (const TrackSegment& m : segs[c]) {
-      if (m.kind != SegmentKind::Carry) continue;
+      if (m.kind != SegmentKind::Carry && m.kind != SegmentKind::Ride) continue;
       const int first = std::max(motion.first, m.first) - 1, last = std::min(motion.last, m.last) + 1;
       if (last - first < 3) continue;
       const auto o0 = position_near(tracks[o], first), o1 = position_near(tracks[o], last);
@@ -321,10 +324,8 @@ std::optional<Ride> find_ride(int o, const TrackSegment& motion, const std::vect
       const double moved = dc.head<2>().norm();
       if (moved < opt.min_carry_distance) continue;
       if ((d_o - dc).head<2>().norm() > opt.ride_tolerance * moved) continue;
-      // Stacked planning parts: the lower one carries the upper; a tray carries any.
       const bool tray = !pose_tracks.planning[c];
-      if (!tray && c0->z() > o0->z()) continue;
-      const double rank = tray ? -1.0 : c0->z();
+      const double rank = tray ? -1.0 : static_cast<double>(c);
       if (rank < best_rank) best_rank = rank, best = Ride{static_cast<int>(c), first, last};
     }
   }
@@ -339,14 +340,26 @@ void split_at_ride(std::vector<TrackSegment>& segs, size_t k, const Ride& ride, 
   const TrackSegment motion = segs[k];
   const Pose before = segs[k - 1].pose, after = segs[k + 1].pose;
   std::vector<TrackSegment> pieces;
-  const int ride_first = std::max(ride.first, motion.first), ride_last = std::min(ride.last, motion.last);
+  int ride_first = std::max(ride.first, motion.first), ride_last = std::min(ride.last, motion.last);
+  // Where a carry meets a ride there is no rest to end it; if the part stands still for a
+  // frame near where the carrier starts (or stops) moving, the hand lets go (takes hold) there:
+  // a carrier's track may start or stop a few frames off.
+  auto slowest = [&](int from, int to) {
+    int best = -1;
+    double least = 3.0 * std::max(noise.sigma_max, o.min_noise);
+    for (int f = std::max(from, 1); f <= to; ++f)
+      if (t.usable[f] && t.usable[f - 1] && (t.position[f] - t.position[f - 1]).norm() < least)
+        least = (t.position[f] - t.position[f - 1]).norm(), best = f;
+    return best;
+  };
   if (ride_first > motion.first) {
     Pose at = before;
     if (auto p = position_near(t, ride_first)) at.translation() = *p;
-    if (displaced(before, at, noise, o, rest_spread(t, segs[k - 1])))
+    if (displaced(before, at, noise, o, rest_spread(t, segs[k - 1]))) {
+      if (const int f = slowest(std::max(motion.first + 1, ride_first - kRideSearch), ride_first); f > 0) ride_first = f;
       pieces.push_back({SegmentKind::Carry, motion.first, ride_first - 1, -1, Pose::Identity(),
                         (at.translation() - before.translation()).norm()});
-    else
+    } else
       segs[k - 1].last = ride_first - 1;  // the start of the motion was noise of the rest
   }
   TrackSegment r{SegmentKind::Ride, ride_first, ride_last, ride.carrier, Pose::Identity(), 0.0};
@@ -355,10 +368,14 @@ void split_at_ride(std::vector<TrackSegment>& segs, size_t k, const Ride& ride, 
   if (ride_last < motion.last) {
     Pose at = after;
     if (auto p = position_near(t, ride_last)) at.translation() = *p;
-    if (displaced(at, after, noise, o, rest_spread(t, segs[k + 1])))
+    if (displaced(at, after, noise, o, rest_spread(t, segs[k + 1]))) {
+      if (const int f = slowest(ride_last, std::min(motion.last - 1, ride_last + kRideSearch)); f > 0) {
+        pieces.back().last = f;
+        ride_last = f;
+      }
       pieces.push_back({SegmentKind::Carry, ride_last + 1, motion.last, -1, Pose::Identity(),
                         (after.translation() - at.translation()).norm()});
-    else
+    } else
       segs[k + 1].first = ride_last + 1;
   }
   if (pieces.front().kind == SegmentKind::Ride) pieces.front().first = segs[k - 1].last + 1;
