@@ -548,6 +548,32 @@ TEST_F(DemonstrationFile, PoseFramesRoundTrip) {
                   {broken_file, "events[1].pose_frames", "'C' is not in objects"});
 }
 
+TEST_F(DemonstrationFile, DoubtsRoundTripAndBadOnesNameTheirField) {
+  Demonstration d = two_picks();
+  d.doubts = {{1, 10, 24, "B moves from the start of the video"}, {0, 40, 40, "A: frame 40: not rigid"}};
+  const std::string file = path("doubts.json");
+  save_demonstration(file, d);
+  const Demonstration l = load_demonstration(file);
+  ASSERT_EQ(l.doubts.size(), 2u);
+  EXPECT_EQ(l.doubts[0].object, 1);
+  EXPECT_EQ(l.doubts[0].first_frame, 10);
+  EXPECT_EQ(l.doubts[0].last_frame, 24);
+  EXPECT_EQ(l.doubts[1].message, "A: frame 40: not rigid");
+  EXPECT_TRUE(validate(l).empty());  // doubts do not stop planning
+  // Without doubts the key is left out, as files of earlier versions have it.
+  save_demonstration(file, two_picks());
+  EXPECT_FALSE(read_json_file(file).contains("doubts"));
+  Json j = read_json_file(file);
+  j["doubts"] = Json::array({{{"object", "A"}, {"first_frame", 9}, {"last_frame", 3}, {"message", "m"}}});
+  const std::string backwards = path("doubts_backwards.json");
+  std::ofstream(backwards) << j.dump(1);
+  expect_mentions(input_error([&] { load_demonstration(backwards); }), {backwards, "doubts[0].last_frame"});
+  j["doubts"][0]["object"] = "Z";
+  const std::string unknown = path("doubts_unknown.json");
+  std::ofstream(unknown) << j.dump(1);
+  expect_mentions(input_error([&] { load_demonstration(unknown); }), {unknown, "doubts[0].object", "'Z' is not in objects"});
+}
+
 TEST_F(DemonstrationFile, SaveOverwritesAnExistingFile) {
   const std::string file = path("d.json");
   std::ofstream(file) << "not json";
