@@ -6,7 +6,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config ccache git
   libtinyxml-dev libconsole-bridge-dev
   libeigen3-dev libfcl-dev libccd-dev libassimp-dev liburdfdom-dev liburdfdom-headers-dev
-  nlohmann-json3-dev libnanoflann-dev libcli11-dev
+  nlohmann-json3-dev libnanoflann-dev libcli11-dev libqhull-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libqt6openglwidgets6
   libgl-dev libegl-dev libgl1-mesa-dri mesa-utils

@@ -246,3 +246,23 @@ TEST_F(Cli, NewRefusesABadSceneOrFile) {
 }
 
 }  // namespace
+
+// `part`: where a user's part rests, from its mesh alone.
+TEST_F(Cli, PartListsWhereABenchmarkPartRests) {
+  const Result r = run({"part", std::string(DEMOPLAN_DATA_DIR) + "/objects/ycbv/meshes/obj_000002.obj", "--scale", "0.001",
+                        "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_GE(j["placements"].size(), 6u);
+  const auto& first = j["placements"][0];
+  EXPECT_GT(std::abs(first["normal"][0].get<double>()), 0.99);
+  EXPECT_GT(first["margin_m"].get<double>(), 0.04);
+  EXPECT_EQ(first["part_on_plane"].size(), 16u);
+  EXPECT_GE(first["polygon"].size(), 3u);
+}
+
+TEST_F(Cli, PartRefusesAMissingMeshAndABadScale) {
+  expect_bad_input(run({"part", "no_such_part.stl"}), {"no_such_part.stl"});
+  expect_bad_input(run({"part", std::string(DEMOPLAN_DATA_DIR) + "/objects/ycbv/meshes/obj_000002.obj", "--scale", "-1"}),
+                   {"obj_000002.obj", "--scale"});
+}
