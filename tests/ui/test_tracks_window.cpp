@@ -48,6 +48,7 @@ private slots:
     QVERIFY(!window_->partTracksDock()->isVisible());
     Document* doc = window_->document();
     const Json before = demonstration_to_json(doc->demonstration());
+    const int height = window_->height();
     detect->trigger();
     QVERIFY2(window_->lastError().isEmpty(), qPrintable(window_->lastError()));
     QCOMPARE(int(doc->demonstration().events.size()), 4);
@@ -64,6 +65,7 @@ private slots:
     doc->selectEvent(0);
     doc->setCurrentFrame(doc->demonstration().events[0].frame + 8);
     QTest::qWait(100);  // let the GL view repaint
+    qInfo("window %d px high before, %d after; tracks dock %d", height, window_->height(), window_->partTracksDock()->height());
     const QString shots = test::artifactDir() + QStringLiteral("/ui");
     QDir().mkpath(shots);
     QVERIFY(window_->grab().save(shots + QStringLiteral("/10_tracks.png")));

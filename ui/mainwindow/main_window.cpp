@@ -837,7 +837,13 @@ bool MainWindow::detectEventsFromTracks() {
                 tr("%1\n\nThe events are unchanged.").arg(QString::fromUtf8(e.what())));
     return false;
   }
-  tracks_dock_->show();
+  if (!tracks_dock_->isVisible()) {
+    tracks_dock_->show();
+    // Room for the curves, once the dock is laid out; the timeline keeps its lanes.
+    QTimer::singleShot(0, this, [this] {
+      resizeDocks({timeline_dock_, tracks_dock_}, {timeline_dock_->height(), 260}, Qt::Vertical);
+    });
+  }
   tracks_dock_->raise();
   const size_t doubts = doc_->demonstration().doubts.size();
   QString text = tr("Found %1 events from the tracks").arg(events);

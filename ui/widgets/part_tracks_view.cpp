@@ -24,13 +24,22 @@ constexpr double kBandTop = 3, kBandH = 16, kStripGap = 8, kBottom = 6;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 const QColor kRestShade{kTrackRestColor.red(), kTrackRestColor.green(), kTrackRestColor.blue(), 50};
 
-// The range that holds nearly all of `values` (and zero, the first rest): a few outliers of
-// tens of centimetres must not flatten the curve the operator reads; they leave the plot.
-std::pair<double, double> robustRange(std::vector<double> values) {
-  if (values.empty()) return {-1, 1};
-  std::sort(values.begin(), values.end());
-  const auto at = [&](double q) { return values[size_t(q * double(values.size() - 1))]; };
-  double lo = std::min(0.0, at(0.01)), hi = std::max(0.0, at(0.99));
+// The range of a running median of `values` (NaN: unseen), and zero, the first rest: a few
+// outliers of tens of centimetres must not flatten the curve the operator reads, so they leave
+// the plot; a carry, many frames long, stays in it.
+std::pair<double, double> robustRange(const std::vector<double>& values) {
+  constexpr int kHalf = 2;
+  double lo = 0, hi = 0;
+  std::vector<double> window;
+  for (int i = 0; i < int(values.size()); ++i) {
+    window.clear();
+    for (int j = std::max(0, i - kHalf); j <= std::min(int(values.size()) - 1, i + kHalf); ++j)
+      if (!std::isnan(values[size_t(j)])) window.push_back(values[size_t(j)]);
+    if (window.empty()) continue;
+    std::nth_element(window.begin(), window.begin() + long(window.size() / 2), window.end());
+    lo = std::min(lo, window[window.size() / 2]);
+    hi = std::max(hi, window[window.size() / 2]);
+  }
   const double pad = std::max(0.08 * (hi - lo), 1.0);
   return {lo - pad, hi + pad};
 }
@@ -58,8 +67,8 @@ PartTracksView::PartTracksView(Document* doc, QWidget* parent) : QWidget(parent)
   connect(doc_->trackDetection(), &TrackDetection::tracksChanged, this, &PartTracksView::reload);
 }
 
-QSize PartTracksView::sizeHint() const { return {800, 200}; }
-QSize PartTracksView::minimumSizeHint() const { return {300, 130}; }
+QSize PartTracksView::sizeHint() const { return {800, 230}; }
+QSize PartTracksView::minimumSizeHint() const { return {300, 110}; }
 
 QRectF PartTracksView::segmentBand() const {
   const FrameAxis a = axis();
@@ -115,18 +124,24 @@ void PartTracksView::computeSeries() {
       }
   for (size_t f = 0; f < samples.size() && !have_ref; ++f)
     if (samples[f].valid) ref = samples[f].pose, have_ref = true;
-  std::vector<double> pos, ang;
   series_.assign(samples.size(), {kNaN, kNaN, kNaN, kNaN});
   for (size_t f = 0; f < samples.size(); ++f) {
     if (!samples[f].valid) continue;
     const Eigen::Vector3d d = (samples[f].pose.translation() - ref.translation()) * 1000.0;
     const double angle = Eigen::AngleAxisd(ref.linear().transpose() * samples[f].pose.linear()).angle() * 180.0 / M_PI;
     series_[f] = {d.x(), d.y(), d.z(), angle};
-    pos.insert(pos.end(), {d.x(), d.y(), d.z()});
-    ang.push_back(angle);
   }
-  std::tie(pos_lo_, pos_hi_) = robustRange(pos);
-  std::tie(ang_lo_, ang_hi_) = robustRange(ang);
+  auto column = [&](int k) {
+    std::vector<double> v(series_.size());
+    for (size_t f = 0; f < series_.size(); ++f) v[f] = series_[f][size_t(k)];
+    return v;
+  };
+  pos_lo_ = 0, pos_hi_ = 0;
+  for (int k = 0; k < 3; ++k) {
+    const auto [lo, hi] = robustRange(column(k));
+    pos_lo_ = std::min(pos_lo_, lo), pos_hi_ = std::max(pos_hi_, hi);
+  }
+  std::tie(ang_lo_, ang_hi_) = robustRange(column(3));
 }
 
 int PartTracksView::segmentAt(int frame) const {
