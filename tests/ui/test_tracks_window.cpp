@@ -62,6 +62,9 @@ private slots:
     const QPoint in_timeline = timeline->mapTo(window_.get(), QPoint(int(timeline->frameToX(60)), 0));
     QVERIFY2(std::abs(in_view.x() - in_timeline.x()) <= 1, qPrintable(QStringLiteral("%1 vs %2").arg(in_view.x()).arg(in_timeline.x())));
     QVERIFY(in_view.y() > in_timeline.y());
+    // On a taller screen the dock opens with room for the position and the angle.
+    window_->resize(1400, 1000);
+    QVERIFY(test::waitFor([&] { return view->showsAngle(); }, 2000));
     doc->selectEvent(0);
     doc->setCurrentFrame(doc->demonstration().events[0].frame + 8);
     QTest::qWait(100);  // let the GL view repaint

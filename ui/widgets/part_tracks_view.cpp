@@ -68,24 +68,30 @@ PartTracksView::PartTracksView(Document* doc, QWidget* parent) : QWidget(parent)
 }
 
 QSize PartTracksView::sizeHint() const { return {800, 230}; }
-QSize PartTracksView::minimumSizeHint() const { return {300, 110}; }
+// Small enough that the main window still fits a 1280x800 screen with the dock open.
+QSize PartTracksView::minimumSizeHint() const { return {300, 64}; }
 
 QRectF PartTracksView::segmentBand() const {
   const FrameAxis a = axis();
   return QRectF(QPointF(a.left(), kBandTop), QPointF(a.right(), kBandTop + kBandH));
 }
 
+bool PartTracksView::showsAngle() const { return height() >= kMinHeightWithAngle; }
+
 QRectF PartTracksView::positionPlot() const {
   const FrameAxis a = axis();
   const double top = kBandTop + kBandH + 4;
-  const double h = std::max(40.0, (height() - top - kStripGap - kBottom) * 0.62);
-  return QRectF(QPointF(a.left(), top), QPointF(a.right(), top + h));
+  const double room = height() - top - kBottom;
+  // On a small screen the dock is short: the position alone, the angle in the tooltip.
+  const double h = showsAngle() ? (room - kStripGap) * 0.62 : room;
+  return QRectF(QPointF(a.left(), top), QPointF(a.right(), top + std::max(20.0, h)));
 }
 
 QRectF PartTracksView::anglePlot() const {
+  if (!showsAngle()) return {};
   const FrameAxis a = axis();
   const double top = positionPlot().bottom() + kStripGap;
-  return QRectF(QPointF(a.left(), top), QPointF(a.right(), std::max(top + 24, height() - kBottom)));
+  return QRectF(QPointF(a.left(), top), QPointF(a.right(), height() - kBottom));
 }
 
 void PartTracksView::showEvent(QShowEvent* e) {
@@ -175,7 +181,7 @@ std::vector<PartTracksView::Doubt> PartTracksView::doubts() const {
 void PartTracksView::paintSegments(QPainter& p) const {
   const FrameAxis a = axis();
   const QRectF band = segmentBand();
-  const double top = band.top(), bottom = anglePlot().bottom();
+  const double top = band.top(), bottom = showsAngle() ? anglePlot().bottom() : positionPlot().bottom();
   const QColor part = objectColor(demonstrationObject());
   QFont small = font();
   small.setPointSizeF(small.pointSizeF() * 0.8);
@@ -214,7 +220,7 @@ void PartTracksView::paintSegments(QPainter& p) const {
   for (const Doubt& d : doubts()) {
     const QRectF r(QPointF(a.toX(d.first), top), QPointF(std::max(a.toX(d.last), a.toX(d.first) + 4), bottom));
     QColor hatch = kDoubtColor;
-    hatch.setAlphaF(0.8f);
+    hatch.setAlphaF(0.5f);  // lighter than in the timeline: the curves must stay readable
     p.fillRect(r, QBrush(hatch, Qt::FDiagPattern));
     p.setPen(QPen(kDoubtColor.darker(115), 1.2));
     p.setBrush(Qt::NoBrush);
@@ -266,7 +272,7 @@ void PartTracksView::paintStrip(QPainter& p, const QRectF& box, int first_series
 
 void PartTracksView::paintMarks(QPainter& p) const {
   const FrameAxis a = axis();
-  const double top = segmentBand().bottom(), bottom = anglePlot().bottom();
+  const double top = segmentBand().bottom(), bottom = showsAngle() ? anglePlot().bottom() : positionPlot().bottom();
   const int object = demonstrationObject();
   const Demonstration& d = doc_->demonstration();
   for (int i = 0; i < int(d.events.size()); ++i) {
@@ -314,7 +320,7 @@ void PartTracksView::paintEvent(QPaintEvent*) {
   }
   paintSegments(p);
   paintStrip(p, positionPlot(), 0, 3, pos_lo_, pos_hi_, tr("position mm"));
-  paintStrip(p, anglePlot(), 3, 1, ang_lo_, ang_hi_, tr("angle °"));
+  if (showsAngle()) paintStrip(p, anglePlot(), 3, 1, ang_lo_, ang_hi_, tr("angle °"));
   paintMarks(p);
 }
 

@@ -31,7 +31,9 @@ public:
   FrameAxis axis() const { return {double(width()), doc_->frameCount()}; }
   QRectF segmentBand() const;
   QRectF positionPlot() const;
-  QRectF anglePlot() const;
+  QRectF anglePlot() const;  // empty when the view is too short for it
+  bool showsAngle() const;
+  static constexpr int kMinHeightWithAngle = 120;
   // The segment of the shown row covering `frame`; -1 when none.
   int segmentAt(int frame) const;
   QSize sizeHint() const override;
