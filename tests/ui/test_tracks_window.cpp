@@ -1,6 +1,7 @@
 // Edit > Detect Events from Tracks in the real main window (OpenGL: runs under Xvfb): enabled on
 // a benchmark project, one undo step, the Part Tracks dock shown under the timeline with its
-// frames lined up. The screenshot goes to build/test-artifacts/ui/10_tracks.png.
+// frames lined up. Screenshots go to build/test-artifacts/ui/10_tracks.png (the window) and
+// 10_tracks_docks.png (the timeline and the tracks: docs/tracks-panel.png).
 #include <QAction>
 #include <QDockWidget>
 #include <QUndoStack>
@@ -72,6 +73,9 @@ private slots:
     const QString shots = test::artifactDir() + QStringLiteral("/ui");
     QDir().mkpath(shots);
     QVERIFY(window_->grab().save(shots + QStringLiteral("/10_tracks.png")));
+    // The timeline and the tracks alone, for docs/tracks-panel.png.
+    const QRect docks = window_->timelinePanel()->parentWidget()->geometry().united(window_->partTracksDock()->geometry());
+    QVERIFY(window_->grab(docks).save(shots + QStringLiteral("/10_tracks_docks.png")));
     doc->undoStack()->undo();
     QCOMPARE(demonstration_to_json(doc->demonstration()), before);
   }
