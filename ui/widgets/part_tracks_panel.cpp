@@ -25,6 +25,8 @@ PartTracksPanel::PartTracksPanel(Document* doc, QWidget* parent) : QWidget(paren
   label->setBuddy(parts_);
   summary_ = new QLabel(this);
   summary_->setTextFormat(Qt::RichText);
+  // A long line is cut, not a reason for the dock (and the window) to be wider.
+  summary_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   bar->addWidget(label);
   bar->addWidget(parts_);
   bar->addWidget(summary_, 1);
