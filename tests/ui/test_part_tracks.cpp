@@ -156,6 +156,12 @@ private slots:
     QCOMPARE(timeline_->jumpToNextDoubt(), 0);  // none after 90: round to the first
     QCOMPARE(doc_->currentFrame(), 30);
     QCOMPARE(doc_->selectedObject(), 1);
+    // The part tracks follow: the doubt's reason under the cursor, not elsewhere.
+    PartTracksView* view = tracks_->view();
+    QCOMPARE(tracks_->partList()->currentText(), QStringLiteral("YCBV_05"));
+    QVERIFY2(view->toolTipAt(view->axis().toX(35)).contains(QStringLiteral("no carry between")),
+             qPrintable(view->toolTipAt(view->axis().toX(35))));
+    QVERIFY(!view->toolTipAt(view->axis().toX(90)).contains(QStringLiteral("no carry between")));
     // Dismissed after a look, and back with undo.
     doc_->removeDoubt(0);
     QVERIFY(doc_->demonstration().doubts.empty());

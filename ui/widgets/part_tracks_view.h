@@ -36,6 +36,8 @@ public:
   static constexpr int kMinHeightWithAngle = 120;
   // The segment of the shown row covering `frame`; -1 when none.
   int segmentAt(int frame) const;
+  // What the tooltip says at `x`: the frame, the values, the segment and any doubt there.
+  QString toolTipAt(double x) const;
   QSize sizeHint() const override;
   QSize minimumSizeHint() const override;
 
@@ -65,7 +67,6 @@ private:
   void paintStrip(QPainter& p, const QRectF& box, int first_series, int series, double lo, double hi,
                   const QString& title) const;
   void paintMarks(QPainter& p) const;
-  QString toolTipAt(double x) const;
 
   Document* doc_;
   std::shared_ptr<const perception::TracksDemonstration> tracks_;
