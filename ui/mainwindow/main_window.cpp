@@ -830,13 +830,16 @@ ExportDialog* MainWindow::showExportDialog() {
 
 bool MainWindow::detectEventsFromTracks() {
   int events = 0;
+  QApplication::setOverrideCursor(Qt::WaitCursor);  // a fraction of a second on the GUI thread
   try {
     events = doc_->trackDetection()->detect();
   } catch (const std::exception& e) {
+    QApplication::restoreOverrideCursor();
     reportError(tr("Detect events from tracks"),
                 tr("%1\n\nThe events are unchanged.").arg(QString::fromUtf8(e.what())));
     return false;
   }
+  QApplication::restoreOverrideCursor();
   if (!tracks_dock_->isVisible()) {
     tracks_dock_->show();
     // Room for the curves, once the dock is laid out; the timeline keeps its lanes.
