@@ -240,13 +240,18 @@ void PartTracksView::paintStrip(QPainter& p, const QRectF& box, int first_series
     canvas.text({box.left() - 5, y}, plot::tick_label(v, ticks.step),
                 plot::TextStyle{.size = 9.5, .color = plot::kAxisColor, .align = Qt::AlignRight | Qt::AlignVCenter});
   }
+  // A faint line per second, under the timeline's ruler ticks.
+  const FrameAxis a = axis();
+  for (int sec = 1; sec * doc_->fps() < a.frames; ++sec) {
+    const double x = a.toX(sec * doc_->fps());
+    canvas.line({x, box.top()}, {x, box.bottom()}, plot::Stroke{plot::kGridColor, 1});
+  }
   // The strip's name and, for x, y, z, which colour is which.
   canvas.text({8, box.top()}, title, plot::TextStyle{.size = 10.5, .bold = true, .align = Qt::AlignLeft | Qt::AlignTop});
   if (series > 1)
     for (int k = 0; k < series; ++k)
       canvas.text({8 + 14.0 * k, box.top() + 16}, QString(QChar(char16_t(u'x' + k))),
                   plot::TextStyle{.size = 10.5, .bold = true, .color = kAxisColors[k], .align = Qt::AlignLeft | Qt::AlignTop});
-  const FrameAxis a = axis();
   canvas.beginClip(box);
   for (int k = first_series; k < first_series + series; ++k) {
     const QColor color = series > 1 ? kAxisColors[k] : kTrackAngleColor;
