@@ -4,6 +4,7 @@
 // 10_tracks_docks.png (the timeline and the tracks: docs/tracks-panel.png).
 #include <QAction>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -50,7 +51,10 @@ private slots:
     Document* doc = window_->document();
     const Json before = demonstration_to_json(doc->demonstration());
     const int height = window_->height();
+    QElapsedTimer clock;
+    clock.start();
     detect->trigger();
+    qInfo("Detect Events from Tracks took %lld ms on the GUI thread", clock.elapsed());  // for the record, not a limit
     QVERIFY2(window_->lastError().isEmpty(), qPrintable(window_->lastError()));
     QCOMPARE(int(doc->demonstration().events.size()), 4);
     QCOMPARE(doc->undoStack()->count(), 1);
