@@ -123,8 +123,7 @@ int run_bench(const BenchOptions& o) {
         if (std::find(available.begin(), available.end(), pose) == available.end()) continue;
         auto scene = std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose, {.mesh_cache = &meshes}));
         auto in = std::make_unique<Instance>();
-        in->problem =
-            make_benchmark_instance(task, scene, o.from == "raw" ? PoseSource::Raw : PoseSource::Subgoals).problem;
+        in->problem = make_task_instance(task, scene, o.from).problem;
         instances[{task_name, robot, pose}] = std::move(in);
         // Planners alternate on each seed, so a slow phase of the machine hits them alike.
         for (int seed : seeds)
@@ -292,8 +291,7 @@ Command register_bench_command(CLI::App& app) {
   sub->add_option("--time-limit", opts->time_limit, "seconds per run")->capture_default_str();
   sub->add_option("--waiter-time-limit", opts->waiter_time_limit, "seconds per run of the waiter task (paper: 300)")
       ->capture_default_str();
-  sub->add_option("--from", opts->from, "object poses from the cleaned key poses or the raw video estimates")
-      ->check(CLI::IsMember({"raw", "subgoals"}))->capture_default_str();
+  add_from_option(*sub, opts->from);
   sub->add_option("--planner", opts->planner, "planner by name")
       ->check(CLI::IsMember(planner_names()))->capture_default_str();
   sub->add_option("--compare", opts->compare,

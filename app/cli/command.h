@@ -23,6 +23,7 @@ Command register_bench_segments_command(CLI::App& app);
 Command register_synth_command(CLI::App& app);
 Command register_extract_command(CLI::App& app);
 Command register_evaluate_command(CLI::App& app);
+Command register_evaluate_tracks_command(CLI::App& app);
 Command register_export_command(CLI::App& app);
 Command register_new_command(CLI::App& app);
 Command register_inspect_command(CLI::App& app);

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
                                       register_bench_command(app), register_bench_segments_command(app),
                                       register_synth_command(app),
                                       register_extract_command(app), register_evaluate_command(app),
+                                      register_evaluate_tracks_command(app),
                                       register_export_command(app), register_new_command(app),
                                       register_inspect_command(app),
                                       register_figure_command(app)};

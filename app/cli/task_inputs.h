@@ -13,7 +13,7 @@ struct TaskInputs {
   std::string task = "shelf_1";
   std::string robot = "panda";
   int pose = 0;
-  std::string from = "subgoals";  // raw | subgoals
+  std::string from = "subgoals";  // raw | subgoals | tracks
   std::string data_dir;
 };
 
@@ -25,6 +25,12 @@ struct LoadedTask {
 };
 
 void add_task_inputs(CLI::App& sub, TaskInputs& inputs, bool with_from = true);
+// --from: where the object poses (and, for tracks, the events) come from.
+void add_from_option(CLI::App& sub, std::string& from);
+// The task instance for `from`: the cleaned key poses (subgoals), the raw estimates at the
+// labelled events (raw), or events and poses from the raw estimates alone (tracks; what the
+// detection could not decide is printed on stderr).
+BenchmarkInstance make_task_instance(const BenchmarkTask& task, std::shared_ptr<const Scene> scene, const std::string& from);
 LoadedTask load_task_inputs(const TaskInputs& inputs);
 
 }  // namespace demoplan::cli

@@ -11,11 +11,11 @@ namespace demoplan {
 
 namespace {
 
-Demonstration events_only(const BenchmarkTask& task) {
+Demonstration events_only(const BenchmarkTask& task, const std::vector<ContactSegment>& segments) {
   Demonstration d;
   d.task = task.name();
   d.object_ids = task.planning_object_ids;
-  for (const auto& s : contact_segments(task)) {
+  for (const auto& s : segments) {
     d.events.push_back({s.first, s.object, EventType::Grasp, 1.0, {}, {}});
     d.events.push_back({s.last + 1, s.object, EventType::Release, 1.0, {}, {}});
   }
@@ -52,6 +52,9 @@ Pose relative_to_tray(const Pose& tray, const Pose& object) {
   flat.translation() << tray.translation().x(), tray.translation().y(), 0.0;
   return flat.inverse() * object;
 }
+
+// Poses of every object at every event of `d` (events set): subgoal columns or raw averages.
+Demonstration place_objects(const BenchmarkTask& task, const Scene& scene, Demonstration d, bool subgoals);
 
 class SupportAssigner {
 public:
@@ -141,7 +144,7 @@ std::vector<ContactSegment> contact_segments(const BenchmarkTask& task) {
 Demonstration demonstration_from_subgoals(const BenchmarkTask& task) {
   if (task.subgoal_poses.empty())
     throw InputError(task.file, "subgoal_objects_poses", "the task has no subgoals (null)");
-  Demonstration d = events_only(task);
+  Demonstration d = events_only(task, contact_segments(task));
   const size_t columns = task.subgoal_poses.front().size();
   if (columns != d.events.size())
     throw InputError(task.file, "subgoal_objects_poses",
@@ -153,7 +156,27 @@ Demonstration demonstration_from_subgoals(const BenchmarkTask& task) {
 }
 
 Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scene& scene, PoseSource source) {
-  Demonstration d = source == PoseSource::Subgoals ? demonstration_from_subgoals(task) : events_only(task);
+  if (source == PoseSource::Subgoals) return place_objects(task, scene, demonstration_from_subgoals(task), true);
+  return demonstration_from_segments(task, scene, contact_segments(task));
+}
+
+Demonstration demonstration_from_segments(const BenchmarkTask& task, const Scene& scene,
+                                          const std::vector<ContactSegment>& segments) {
+  for (size_t k = 0; k < segments.size(); ++k) {
+    const auto& s = segments[k];
+    if (s.object < 0 || s.object >= static_cast<int>(task.planning_object_ids.size()) || s.first < 0 ||
+        s.last < s.first || s.last + 1 >= task.frames + 1)
+      throw InputError(task.file, "segments[" + std::to_string(k) + "]",
+                       "object " + std::to_string(s.object) + ", frames " + std::to_string(s.first) + "-" +
+                           std::to_string(s.last) + " are outside the task's objects or its " +
+                           std::to_string(task.frames) + " frames");
+  }
+  return place_objects(task, scene, events_only(task, segments), false);
+}
+
+namespace {
+
+Demonstration place_objects(const BenchmarkTask& task, const Scene& scene, Demonstration d, bool subgoals) {
   const size_t n = d.object_ids.size();
   if (d.events.empty()) throw InputError(task.file, "contacts", "no object is ever held");
   for (auto& e : d.events) {
@@ -182,7 +205,7 @@ Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scen
       // pose the object is picked up from: waiter_0's columns drift while objects ride).
       const int last = static_cast<int>(d.events.size()) - 1;
       const int where = r.start_event < 0 ? 0 : r.end_event < 0 ? last : r.end_event;
-      const Pose* cleaned = source == PoseSource::Subgoals ? &d.events[where].poses[o] : nullptr;
+      const Pose* cleaned = subgoals ? &d.events[where].poses[o] : nullptr;
       const auto [pose, frame] = assign.place(static_cast<int>(o), raw, frames, cleaned, where);
       // Every event during the rest, and the two that bound it, see the object there.
       const int from = std::max(r.start_event, 0);
@@ -200,6 +223,8 @@ Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scen
     for (auto& e : d.events) e.pose_frames.clear();
   return d;
 }
+
+}  // namespace
 
 PoseDeviation pose_deviation(const Demonstration& a, const Demonstration& b) {
   std::vector<double> t, r;

@@ -35,6 +35,12 @@ Demonstration demonstration_from_subgoals(const BenchmarkTask& task);
 enum class PoseSource { Subgoals, Raw };
 Demonstration demonstration_from_benchmark(const BenchmarkTask& task, const Scene& scene, PoseSource source);
 
+// The raw demonstration with events from `segments` (another source's carries, e.g. detected
+// from the pose tracks) in place of the contact labels, which it does not read. Throws
+// InputError naming the segment when one lies outside the task's objects or frames.
+Demonstration demonstration_from_segments(const BenchmarkTask& task, const Scene& scene,
+                                          const std::vector<ContactSegment>& segments);
+
 // How far one demonstration's object poses lie from another's (same events), over every
 // (event, object) pair whose pose is in the world in both.
 struct PoseDeviation {

@@ -14,4 +14,14 @@ BenchmarkInstance make_benchmark_instance(const BenchmarkTask& task, std::shared
   return out;
 }
 
+BenchmarkInstance make_benchmark_instance(std::shared_ptr<const Scene> scene, Demonstration demonstration) {
+  DeckPlacement placed = place_on_deck(*scene, std::move(demonstration));
+  ValidationTask validation = validation_task(placed.demonstration, *scene);
+  BenchmarkInstance out;
+  out.problem = make_planning_problem(std::move(scene), placed.demonstration, std::move(validation));
+  out.demonstration = std::move(placed.demonstration);
+  out.deck = std::move(placed.report);
+  return out;
+}
+
 }  // namespace demoplan

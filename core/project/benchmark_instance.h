@@ -20,5 +20,7 @@ struct BenchmarkInstance {
 // Throws InputError when the demonstration cannot be planned (naming the event).
 BenchmarkInstance make_benchmark_instance(const BenchmarkTask& task, std::shared_ptr<const Scene> scene,
                                           PoseSource source);
+// From a demonstration made another way (from the raw poses): judged by its own start and goal.
+BenchmarkInstance make_benchmark_instance(std::shared_ptr<const Scene> scene, Demonstration demonstration);
 
 }  // namespace demoplan

@@ -3,11 +3,13 @@
 // poses say about when each part was picked up and put down.
 //
 // Per part, the track is cut into rests (the pose constant up to the detector's noise) and
-// motions by dynamic programming: a rest costs each frame its squared Mahalanobis distance to the
-// rest's median position, capped so that outliers of tens of centimetres cost no more than a few
-// sigmas; a motion costs a constant per frame and a penalty per motion. The noise is measured on
-// each track (the residuals to a running median, per principal direction), not fixed: tracks that
-// jitter by centimetres along the camera ray get wide rests, clean ones narrow. Rests whose poses
+// motions by dynamic programming: a rest costs each frame its negative log-likelihood under a
+// Gaussian about the rest's median position with the rest's own spread, capped so that outliers
+// of tens of centimetres cost no more than a few sigmas; a motion costs what a rest spread over
+// `max_rest_spread` would, per frame, and a penalty per motion. The noise is measured, not fixed:
+// per track (the residuals to a running median, per principal direction: tracks jitter most
+// along the camera ray) and per rest (a part may rest quietly, then wander by centimetres once
+// the hand has moved in front of it). Rests whose poses
 // lie closer than a carry's minimum displacement are one rest (drift, jumps, flips); a part moving
 // with another (a tray) and keeping its place on it rides instead of being carried; frames where
 // the part is not seen belong to the motion around them. Where the data cannot decide, the
@@ -24,9 +26,11 @@
 namespace demoplan::perception {
 
 struct TrackSegmentationOptions {
-  double outlier_sigmas = 4.0;       // a rest frame costs at most this many sigmas, squared
-  double motion_cost = 6.0;          // per moving frame (a rest frame 2.4 sigmas off costs as much)
+  double outlier_sigmas = 5.0;       // a rest frame costs at most this many of its rest's sigmas
+  double max_rest_spread = 0.02;     // m: samples spread wider (one sigma) cost as much as moving
   double motion_penalty = 25.0;      // per motion
+  int min_rest_frames = 5;           // seen frames a rest needs
+  int max_unseen_end = 10;           // frames a part may go unseen at the end without a doubt
   double missing_cost = 0.01;        // per unseen frame in a rest: gaps go to the motion around them
   double min_noise = 0.001;          // m, floor of a track's measured noise per direction
   double min_carry_distance = 0.05;  // m: rests closer than this (and than below) are one rest
