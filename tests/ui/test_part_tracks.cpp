@@ -10,6 +10,7 @@
 #include <QtTest>
 
 #include "core/project/project.h"
+#include "perception/events/tracks_demonstration.h"
 #include "ui/document/document.h"
 #include "ui/widgets/part_tracks_panel.h"
 #include "ui/widgets/part_tracks_view.h"

@@ -1,5 +1,6 @@
 #include "ui/document/track_detection.h"
 
+#include "perception/events/tracks_demonstration.h"
 #include "ui/document/document.h"
 
 namespace demoplan::ui {

@@ -9,7 +9,9 @@
 #include <QString>
 #include <memory>
 
-#include "perception/events/tracks_demonstration.h"
+namespace demoplan::perception {
+struct TracksDemonstration;  // perception/events/tracks_demonstration.h: kept out of document.h
+}
 
 namespace demoplan::ui {
 

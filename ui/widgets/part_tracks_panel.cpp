@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "perception/events/tracks_demonstration.h"
 #include "ui/widgets/part_tracks_view.h"
 #include "ui/widgets/style.h"
 
@@ -37,11 +38,10 @@ PartTracksPanel::PartTracksPanel(Document* doc, QWidget* parent) : QWidget(paren
   connect(parts_, &QComboBox::currentIndexChanged, this, [this](int row) {
     view_->setRow(row);
     refreshSummary();
-    // Choosing a planned part here selects it everywhere (a tray has no lane to select).
-    if (view_->tracks() && row >= 0) {
-      const int object = doc_->demonstration().object_index(view_->tracks()->tracks.object_ids[size_t(row)]);
-      if (object >= 0) doc_->selectObject(object);
-    }
+    // Choosing a planned part here selects it everywhere; a tray has no lane, so nothing is
+    // selected (a click on the lane that was selected then brings its part back here).
+    if (view_->tracks() && row >= 0)
+      doc_->selectObject(doc_->demonstration().object_index(view_->tracks()->tracks.object_ids[size_t(row)]));
   });
   connect(view_, &PartTracksView::tracksReloaded, this, &PartTracksPanel::refill);
   connect(doc_, &Document::selectionChanged, this, &PartTracksPanel::followSelection);

@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 
+#include "perception/events/tracks_demonstration.h"
 #include "plot/axis.h"
 #include "plot/painter_canvas.h"
 #include "plot/palette.h"

@@ -11,7 +11,6 @@
 #include <memory>
 #include <vector>
 
-#include "perception/events/tracks_demonstration.h"
 #include "ui/document/document.h"
 #include "ui/widgets/frame_axis.h"
 
