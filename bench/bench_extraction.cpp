@@ -73,10 +73,11 @@ void row(const std::string& label, const Pool& p, bool with_fps) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false;
+  bool quick = false, segments = false;  // --segments: segment_tracks reads the tracks
   std::string keep;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
+    if (!std::strcmp(argv[i], "--segments")) segments = true;
     if (!std::strcmp(argv[i], "--keep") && i + 1 < argc) keep = argv[++i];
   }
   const std::string data = DEMOPLAN_DATA_DIR;
@@ -110,6 +111,7 @@ int main(int argc, char** argv) {
       const SynthOutput s = write_synthetic_demonstration(so, dir.string());
       ExtractionOptions eo;
       if (c.hands) eo.hands_json = s.hands;
+      if (segments) eo.events = ExtractionOptions::Events::Segments;
       MarkerScene scene = load_marker_scene(s.scene);
       if (c.bop_only) {
         for (auto& o : scene.objects) o.markers.clear();

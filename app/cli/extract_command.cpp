@@ -19,7 +19,7 @@ namespace demoplan::cli {
 namespace {
 
 struct ExtractCliOptions {
-  std::string video, camera, scene, detections, hands, out;
+  std::string video, camera, scene, detections, hands, out, events = "thresholds";
   bool board = false;
   bool json = false;
 };
@@ -36,6 +36,7 @@ int run_extract(const ExtractCliOptions& o) {
   options.bop_csv = o.detections;
   options.hands_json = o.hands;
   options.board_extrinsics = o.board;
+  if (o.events == "segments") options.events = perception::ExtractionOptions::Events::Segments;
   options.camera_source = camera_path;
   perception::MarkerPoseTracker tracker(scene);
   const perception::ExtractionResult r = perception::extract_demonstration(o.video, camera, tracker, scene.task, options);
@@ -94,6 +95,11 @@ Command register_extract_command(CLI::App& app) {
   sub->add_option("--hands", o->hands, "hand-contact detections (100DOH, demoplan-hand-detections JSON)")
       ->check(CLI::ExistingFile);
   sub->add_option("--out", o->out, "demonstration to write (the tracks go beside it, <stem>.tracks.json)")->required();
+  sub->add_option("--events", o->events,
+                  "event detector: thresholds (for marker tracks) or segments (for noisier tracks, e.g. a BOP "
+                  "detector's; docs/perception.md)")
+      ->check(CLI::IsMember({"thresholds", "segments"}))
+      ->capture_default_str();
   sub->add_flag("--board-extrinsics", o->board, "find the camera pose from the board even if the camera file gives it");
   sub->add_flag("--json", o->json, "print one JSON object on stdout");
   return {sub, [o] { return run_extract(*o); }};

@@ -69,7 +69,8 @@ ExtractionResult extract_demonstration(const std::string& video_path, const Came
   r.raw.resize(frames);
   if (!bop.empty()) fuse_bop_detections(r.raw, bop, r.world_T_camera, o.bop_csv, o.bop_weight, &r.warnings);
 
-  r.contacts = detect_contacts(r.raw, o.contacts);
+  r.contacts = o.events == ExtractionOptions::Events::Segments ? segment_tracks(r.raw, o.segmentation).contacts(r.raw)
+                                                                : detect_contacts(r.raw, o.contacts);
   if (!hands.empty()) {
     std::vector<Eigen::AlignedBox3d> bounds;
     for (const auto& part : tracker.parts()) bounds.push_back(part.extent);

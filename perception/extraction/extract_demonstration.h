@@ -11,6 +11,7 @@
 #include "core/demo/demonstration.h"
 #include "perception/camera/camera_model.h"
 #include "perception/events/contact_detector.h"
+#include "perception/events/track_segmentation.h"
 #include "perception/events/hand_fusion.h"
 #include "perception/markers/marker_detector.h"
 #include "perception/tracking/pose_track.h"
@@ -20,6 +21,10 @@ namespace demoplan::perception {
 
 struct ExtractionOptions {
   ContactDetectorOptions contacts;
+  // Which event detector reads the tracks: thresholds (detect_contacts, tuned on marker tracks)
+  // or segments (segment_tracks, made for real detectors' noisier tracks).
+  enum class Events { Thresholds, Segments } events = Events::Thresholds;
+  TrackSegmentationOptions segmentation;
   HandFusionOptions hands;
   std::string bop_csv;     // optional BOP results file
   std::string hands_json;  // optional hand-contact detections
