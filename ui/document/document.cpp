@@ -63,6 +63,7 @@ Document::Document(std::string default_data_dir, QObject* parent)
   media_ = new Media(this);
   planning_ = new PlanningController(this);
   detection_ = new EventDetection(this);
+  track_detection_ = new TrackDetection(this);
   steps_ = new StepStatusModel(this);
   connect(&undo_, &QUndoStack::cleanChanged, this, [this] { emit modifiedChanged(isModified()); });
   connect(media_, &Media::edited, this, &Document::setModified);
@@ -317,6 +318,18 @@ void Document::setEventConfidence(int event, double confidence) {
   d.events[event].confidence = std::clamp(confidence, 0.0, 1.0);
   undo_.push(new DemoCommand(this, tr("Set confidence"), demonstration_, d, selected_event_, selected_event_,
                              kMergeConfidence, event));
+}
+
+void Document::removeDoubt(int index) {
+  if (index < 0 || index >= static_cast<int>(demonstration_.doubts.size())) return;
+  Demonstration d = demonstration_;
+  const DetectionDoubt& x = d.doubts[index];
+  const QString text = tr("Dismiss the doubt on %1 at frames %2-%3")
+                           .arg(q(x.object >= 0 && x.object < int(d.object_ids.size()) ? d.object_ids[x.object] : "?"))
+                           .arg(x.first_frame)
+                           .arg(x.last_frame);
+  d.doubts.erase(d.doubts.begin() + index);
+  pushEdit(text, d, selected_event_);
 }
 
 void Document::replaceDemonstration(const Demonstration& demo, const QString& text) {

@@ -2,7 +2,8 @@
 // The open project as the whole UI sees it: the project file, the scene it refers to (loaded
 // with visual meshes), the demonstration with an undo stack for every edit, the selection and
 // the playhead. What belongs to one step lives in its own part, owned here: the recording
-// (Media), event detection (EventDetection), planning and its result (PlanningController), and
+// (Media), event detection in the video (EventDetection) and from the task's pose tracks
+// (TrackDetection), planning and its result (PlanningController), and
 // how each step stands (StepStatusModel). Widgets read from these and change them only through
 // their methods; signals tell them what changed.
 #include <QObject>
@@ -16,6 +17,7 @@
 #include "ui/document/media.h"
 #include "ui/document/planning_controller.h"
 #include "ui/document/step_status.h"
+#include "ui/document/track_detection.h"
 
 namespace demoplan::ui {
 
@@ -29,6 +31,7 @@ public:
   Media* media() { return media_; }
   const Media* media() const { return media_; }
   EventDetection* detection() { return detection_; }
+  TrackDetection* trackDetection() { return track_detection_; }
   PlanningController* planning() { return planning_; }
   const PlanningController* planning() const { return planning_; }
   StepStatusModel* steps() { return steps_; }
@@ -74,6 +77,8 @@ public:
   // field's spin steps, one gizmo drag) of the same part and event are one undo step.
   void setObjectPose(int event, int object, const Pose& world_pose, int merge_key = -1);
   void setEventConfidence(int event, double confidence);
+  // Dismisses a detection doubt (Demonstration::doubts) once the operator has checked it.
+  void removeDoubt(int index);
   // Replaces the whole demonstration (as one undoable step).
   void replaceDemonstration(const Demonstration& demo, const QString& text);
   // Used by the undo commands.
@@ -139,6 +144,7 @@ private:
   Media* media_ = nullptr;
   PlanningController* planning_ = nullptr;
   EventDetection* detection_ = nullptr;
+  TrackDetection* track_detection_ = nullptr;
   StepStatusModel* steps_ = nullptr;
 };
 

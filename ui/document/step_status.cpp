@@ -98,6 +98,9 @@ StepState StepStatusModel::events() const {
   for (const auto& e : d.events) low += e.confidence < kLowConfidence;
   if (low > 0)
     return {StepStatus::Warning, tr("%1 event(s) below %2% confidence: check them").arg(low).arg(kLowConfidence * 100)};
+  if (!d.doubts.empty())
+    return {StepStatus::Warning, tr("%1 detection doubt(s), hatched on the timeline: check the events there (Ctrl+Shift+J), "
+                                    "then dismiss them").arg(d.doubts.size())};
   return {StepStatus::Ok, tr("%1 events on %2 parts, all rules hold").arg(d.events.size()).arg(d.object_ids.size())};
 }
 

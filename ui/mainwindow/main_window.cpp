@@ -33,6 +33,7 @@
 #include "core/error.h"
 #include "ui/view3d/scene_view.h"
 #include "ui/widgets/export_dialog.h"
+#include "ui/widgets/part_tracks_panel.h"
 #include "ui/widgets/planner_panel.h"
 #include "ui/widgets/pose_editor.h"
 #include "ui/widgets/result_panel.h"
@@ -101,7 +102,7 @@ MainWindow::MainWindow(MainWindowOptions options, QWidget* parent)
   connect(qApp, &QApplication::focusChanged, this, [this](QWidget*, QWidget* now) {
     for (QWidget* w = now; w; w = w->parentWidget()) {
       if (w == video_dock_) return step_bar_->setCurrent(Step::Video);
-      if (w == timeline_dock_) return step_bar_->setCurrent(Step::Events);
+      if (w == timeline_dock_ || w == tracks_dock_) return step_bar_->setCurrent(Step::Events);
       if (w == inspector_dock_) return step_bar_->setCurrent(Step::Poses);
       if (w == planner_dock_ || w == result_dock_) return step_bar_->setCurrent(Step::Plan);
       if (qobject_cast<ExportDialog*>(w)) return step_bar_->setCurrent(Step::Export);
@@ -157,10 +158,14 @@ void MainWindow::createDocks() {
   planner_dock_ = addDock(tr("Planner"), QStringLiteral("PlannerDock"), planner_, Qt::BottomDockWidgetArea);
   result_ = new ResultPanel(doc_, this);
   result_dock_ = addDock(tr("Result"), QStringLiteral("ResultDock"), result_, Qt::BottomDockWidgetArea);
+  part_tracks_ = new PartTracksPanel(doc_, this);
+  tracks_dock_ = addDock(tr("Part Tracks"), QStringLiteral("PartTracksDock"), part_tracks_, Qt::BottomDockWidgetArea);
   history_ = new QUndoView(doc_->undoStack(), this);
   history_->setEmptyLabel(tr("<opened>"));
   history_dock_ = addDock(tr("History"), QStringLiteral("HistoryDock"), history_, Qt::BottomDockWidgetArea);
   splitDockWidget(timeline_dock_, inspector_dock_, Qt::Vertical);
+  // Under the timeline, the same width, so its frames line up with the timeline's.
+  splitDockWidget(timeline_dock_, tracks_dock_, Qt::Vertical);
   splitDockWidget(inspector_dock_, planner_dock_, Qt::Horizontal);
   tabifyDockWidget(planner_dock_, result_dock_);
   tabifyDockWidget(result_dock_, history_dock_);
@@ -168,6 +173,8 @@ void MainWindow::createDocks() {
   resizeDocks({video_dock_}, {470}, Qt::Horizontal);
   resizeDocks({inspector_dock_, planner_dock_}, {330, 950}, Qt::Horizontal);
   resizeDocks({timeline_dock_, inspector_dock_}, {118, 236}, Qt::Vertical);
+  // Shown by Detect Events from Tracks (or View > Part Tracks): the video workflow keeps its room.
+  tracks_dock_->hide();
   // Plan brings the planner forward; a finished plan its result.
   connect(doc_->planning()->runner(), &PlanRunner::started, this, [this] {
     planner_dock_->show();
@@ -248,8 +255,17 @@ void MainWindow::createActions() {
     if (!doc_->detection()->start()) reportError(tr("Detect events"), doc_->detection()->blocker());
   });
   detect->setShortcut(QKeySequence(QStringLiteral("Ctrl+D")));
+  track_detect_action_ = edit->addAction(tr("Detect Events from &Tracks"), this, &MainWindow::detectEventsFromTracks);
+  track_detect_action_->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+D")));
+  track_detect_action_->setStatusTip(tr("Find the grasps and releases from the benchmark task's pose tracks alone (no labels); "
+                                        "the Part Tracks panel shows why each is where it is. Undo brings the old events back."));
   auto* next_issue = edit->addAction(tr("Go to the &Broken Rule"), this, [this] { timeline_->jumpToIssue(0); });
   next_issue->setShortcut(QKeySequence(QStringLiteral("Ctrl+J")));
+  auto* next_doubt = edit->addAction(tr("Go to the Next D&oubt"), this, [this] {
+    if (timeline_->jumpToNextDoubt() < 0) statusBar()->showMessage(tr("No detection doubts"), 3000);
+  });
+  next_doubt->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+J")));
+  next_doubt->setStatusTip(tr("Move the playhead to the next frame range the event detection could not decide"));
 
   // ---- View
   view_menu_ = menuBar()->addMenu(tr("&View"));
@@ -265,7 +281,7 @@ void MainWindow::createActions() {
   auto* path_view = view_menu_->addAction(tr("Show the Planned &Path"), this, [this] { doc_->setPlaybackT(doc_->playbackT()); });
   path_view->setStatusTip(tr("Show the robot and the parts along the planned path"));
   view_menu_->addSeparator();
-  for (QDockWidget* d : {video_dock_, timeline_dock_, inspector_dock_, planner_dock_, result_dock_, history_dock_})
+  for (QDockWidget* d : {video_dock_, timeline_dock_, tracks_dock_, inspector_dock_, planner_dock_, result_dock_, history_dock_})
     view_menu_->addAction(d->toggleViewAction());
   view_menu_->addSeparator();
   view_menu_->addAction(tr("&Reset Layout"), this, [this] { restoreState(default_state_); });
@@ -342,6 +358,7 @@ void MainWindow::updateTitle() {
   setWindowTitle(QStringLiteral("%1[*] — demoplan").arg(name));
   setWindowModified(doc_->isModified());
   save_action_->setEnabled(doc_->hasProject());
+  track_detect_action_->setEnabled(doc_->trackDetection()->blocker().isEmpty());
 }
 
 void MainWindow::updateSteps() {
@@ -811,6 +828,33 @@ ExportDialog* MainWindow::showExportDialog() {
   return dialog;
 }
 
+bool MainWindow::detectEventsFromTracks() {
+  int events = 0;
+  QApplication::setOverrideCursor(Qt::WaitCursor);  // a fraction of a second on the GUI thread
+  try {
+    events = doc_->trackDetection()->detect();
+  } catch (const std::exception& e) {
+    QApplication::restoreOverrideCursor();
+    reportError(tr("Detect events from tracks"),
+                tr("%1\n\nThe events are unchanged.").arg(QString::fromUtf8(e.what())));
+    return false;
+  }
+  QApplication::restoreOverrideCursor();
+  if (!tracks_dock_->isVisible()) {
+    tracks_dock_->show();
+    // Room for the curves, once the dock is laid out; the timeline keeps its lanes.
+    QTimer::singleShot(0, this, [this] {
+      resizeDocks({timeline_dock_, tracks_dock_}, {timeline_dock_->height(), 260}, Qt::Vertical);
+    });
+  }
+  tracks_dock_->raise();
+  const size_t doubts = doc_->demonstration().doubts.size();
+  QString text = tr("Found %1 events from the tracks").arg(events);
+  if (doubts > 0) text += tr("; %1 doubt(s) hatched on the timeline (Ctrl+Shift+J)").arg(doubts);
+  statusBar()->showMessage(text + tr(". Ctrl+Z brings the previous events back."), 15000);
+  return true;
+}
+
 void MainWindow::addEventAtPlayhead(EventType type) {
   if (!doc_->hasProject()) return;
   int object = doc_->selectedObject();
@@ -831,6 +875,8 @@ void MainWindow::showShortcuts() {
                              {"Del", tr("delete the selected event")},
                              {"Ctrl+Z / Ctrl+Shift+Z", tr("undo / redo")},
                              {"Ctrl+J", tr("go to the event that breaks a rule")},
+                             {"Ctrl+Shift+J", tr("go to the next detection doubt")},
+                             {"Ctrl+Shift+D", tr("detect the events from the benchmark task's pose tracks")},
                              {"F", tr("fit the 3D view")},
                              {"T", tr("show / hide the planner's trees")},
                              {"F5 / Esc", tr("plan / cancel planning")},

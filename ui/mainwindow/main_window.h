@@ -22,6 +22,7 @@ class QDropEvent;
 namespace demoplan::ui {
 
 class ExportDialog;
+class PartTracksPanel;
 class PlannerPanel;
 class PoseEditor;
 class ResultPanel;
@@ -48,6 +49,8 @@ public:
   Document* document() const { return doc_; }
   SceneView* sceneView() const { return scene_view_; }
   TimelinePanel* timelinePanel() const { return timeline_; }
+  PartTracksPanel* partTracksPanel() const { return part_tracks_; }
+  QDockWidget* partTracksDock() const { return tracks_dock_; }
   PoseEditor* poseEditor() const { return pose_editor_; }
   PlannerPanel* plannerPanel() const { return planner_; }
   ResultPanel* resultPanel() const { return result_; }
@@ -67,6 +70,8 @@ public:
   bool saveAs(const QString& file = QString());
   bool openVideo(const QString& file = QString());
   bool openCamera(const QString& file = QString());
+  // Edit > Detect Events from Tracks: replaces the events (one undo step), shows the Part Tracks.
+  bool detectEventsFromTracks();
   // Startup: a file from the command line, else recovery of a crashed session, else the most
   // recent project, else the sample.
   void startUp(const QString& file_from_command_line);
@@ -114,13 +119,15 @@ private:
   SceneView* scene_view_ = nullptr;
   VideoPanel* video_ = nullptr;
   TimelinePanel* timeline_ = nullptr;
+  PartTracksPanel* part_tracks_ = nullptr;
   PoseEditor* pose_editor_ = nullptr;
   PlannerPanel* planner_ = nullptr;
   ResultPanel* result_ = nullptr;
   QUndoView* history_ = nullptr;
   StepBar* step_bar_ = nullptr;
   QDockWidget *video_dock_ = nullptr, *timeline_dock_ = nullptr, *inspector_dock_ = nullptr, *planner_dock_ = nullptr,
-              *result_dock_ = nullptr, *history_dock_ = nullptr;
+              *result_dock_ = nullptr, *history_dock_ = nullptr,
+              *tracks_dock_ = nullptr;
   QMenu* recent_menu_ = nullptr;
   QMenu* view_menu_ = nullptr;
   QLabel* frame_label_ = nullptr;
@@ -131,7 +138,7 @@ private:
   QString last_error_;
   QByteArray default_state_;
   QAction *save_action_ = nullptr, *plan_action_ = nullptr, *cancel_action_ = nullptr, *export_action_ = nullptr,
-          *delete_action_ = nullptr;
+          *delete_action_ = nullptr, *track_detect_action_ = nullptr;
 };
 
 }  // namespace demoplan::ui

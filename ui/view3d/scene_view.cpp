@@ -145,8 +145,6 @@ double distanceToSegment(const QPointF& p, const QPointF& a, const QPointF& b) {
   return std::hypot(p.x() - c.x(), p.y() - c.y());
 }
 
-const QColor kAxisColors[3] = {QColor(0xe5, 0x39, 0x35), QColor(0x43, 0xa0, 0x47), QColor(0x1e, 0x88, 0xe5)};
-
 }  // namespace
 
 SceneView::SceneView(Document* doc, QWidget* parent) : QOpenGLWidget(parent), doc_(doc) {

@@ -18,6 +18,14 @@ inline const QColor kWarningColor{0xd9, 0x8e, 0x04};
 inline const QColor kErrorColor{0xcf, 0x22, 0x2e};
 inline const QColor kBusyColor{0x1f, 0x6f, 0xeb};
 inline const QColor kSelectionColor{0xff, 0xc4, 0x00};
+// x, y, z: the world axes in the 3D view and the position curves of the part tracks.
+inline const QColor kAxisColors[3] = {QColor(0xe5, 0x39, 0x35), QColor(0x43, 0xa0, 0x47), QColor(0x1e, 0x88, 0xe5)};
+// A frame range the event detection could not decide (timeline and part tracks, hatched).
+inline const QColor kDoubtColor = kWarningColor;
+// A part at rest in its track (shaded lightly behind the curves).
+inline const QColor kTrackRestColor{0x8f, 0xa8, 0xbf};
+// A part's rotation angle in its track.
+inline const QColor kTrackAngleColor{0x6a, 0x3d, 0x9a};
 
 // "grasp" / "release"
 QString eventTypeName(EventType type);

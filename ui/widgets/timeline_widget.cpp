@@ -40,18 +40,10 @@ QSize TimelineWidget::sizeHint() const {
 }
 QSize TimelineWidget::minimumSizeHint() const { return {300, kRuler + 2 * kLane + 8}; }
 
-double TimelineWidget::right() const { return width() - 14.0; }
-
-double TimelineWidget::frameToX(double frame) const {
-  const int n = std::max(2, doc_->frameCount());
-  return kGutter + 8 + frame / double(n - 1) * (right() - kGutter - 8);
-}
-
-int TimelineWidget::xToFrame(double x) const {
-  const int n = std::max(2, doc_->frameCount());
-  const double f = (x - kGutter - 8) / (right() - kGutter - 8) * (n - 1);
-  return std::clamp(int(std::lround(f)), 0, n - 1);
-}
+FrameAxis TimelineWidget::axis() const { return {double(width()), doc_->frameCount()}; }
+double TimelineWidget::right() const { return axis().right(); }
+double TimelineWidget::frameToX(double frame) const { return axis().toX(frame); }
+int TimelineWidget::xToFrame(double x) const { return axis().toFrame(x); }
 
 int TimelineWidget::laneTop(int object) const { return kRuler + object * kLane; }
 
@@ -69,6 +61,21 @@ QRectF TimelineWidget::markerRect(int event) const {
   const double x = frameToX(frame);
   const double cy = laneTop(e.object) + kLane / 2.0;
   return QRectF(x - 8, cy - 8, 16, 16);
+}
+
+QRectF TimelineWidget::doubtRect(int index) const {
+  const auto& doubts = doc_->demonstration().doubts;
+  if (index < 0 || index >= int(doubts.size())) return {};
+  const DetectionDoubt& x = doubts[size_t(index)];
+  const double left = frameToX(x.first_frame);
+  return QRectF(QPointF(left, laneTop(x.object) + 3), QPointF(std::max(frameToX(x.last_frame), left + 4), laneTop(x.object) + kLane - 3));
+}
+
+int TimelineWidget::doubtAt(const QPointF& p) const {
+  if (!doc_->hasProject()) return -1;
+  for (int i = 0; i < int(doc_->demonstration().doubts.size()); ++i)
+    if (doubtRect(i).adjusted(-2, 0, 2, 0).contains(p)) return i;
+  return -1;
 }
 
 int TimelineWidget::eventAt(const QPointF& p) const {
@@ -188,6 +195,16 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
   }
   p.setPen(pal.color(QPalette::Mid));
   p.drawLine(QPointF(kGutter, kRuler), QPointF(kGutter, laneTop(lanes)));
+  // Doubts: the frames the detection could not decide, hatched amber (as in the part tracks).
+  for (int i = 0; i < int(d.doubts.size()); ++i) {
+    const QRectF r = doubtRect(i);
+    QColor hatch = kDoubtColor;
+    hatch.setAlphaF(0.8f);
+    p.fillRect(r, QBrush(hatch, Qt::FDiagPattern));
+    p.setPen(QPen(kDoubtColor.darker(115), 1.2));
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(r);
+  }
   // Carrying intervals: from a grasp to the next release of the same part.
   for (size_t i = 0; i < d.events.size(); ++i) {
     const ContactEvent& g = d.events[i];
@@ -300,7 +317,11 @@ void TimelineWidget::contextMenuEvent(QContextMenuEvent* e) {
                    this, [this, ev] { doc_->removeEvent(ev); });
     if (ce.confidence < 1.0)
       menu.addAction(tr("Mark as checked (confidence 100%)"), this, [this, ev] { doc_->setEventConfidence(ev, 1.0); });
-  } else if (lane >= 0) {
+  } else if (const int doubt = doubtAt(e->pos()); doubt >= 0) {
+    menu.addAction(tr("Dismiss This Doubt (checked)"), this, [this, doubt] { doc_->removeDoubt(doubt); });
+  }
+  if (ev < 0 && lane >= 0) {
+    if (!menu.isEmpty()) menu.addSeparator();
     const QString name = QString::fromStdString(d.object_ids[lane]);
     menu.addAction(tr("Add grasp of %1 at frame %2").arg(name).arg(frame), this,
                    [this, frame, lane] { doc_->selectEvent(doc_->addEvent(frame, lane, EventType::Grasp)); });
@@ -326,6 +347,14 @@ bool TimelineWidget::event(QEvent* e) {
           tip += QStringLiteral("<br><span style='color:#cf222e'>%1</span>").arg(QString::fromStdString(issue.message).toHtmlEscaped());
       tip += tr("<br><i>drag to move · right-click to delete</i>");
       QToolTip::showText(he->globalPos(), tip, this, markerRect(ev).toRect());
+    } else if (const int doubt = doubtAt(he->pos()); doubt >= 0) {
+      const DetectionDoubt& x = doc_->demonstration().doubts[size_t(doubt)];
+      const QString tip = tr("<b>Detection doubt</b>, frames %1–%2<br>%3<br><i>check the events here · right-click to "
+                             "dismiss</i>")
+                              .arg(x.first_frame)
+                              .arg(x.last_frame)
+                              .arg(QString::fromStdString(x.message).toHtmlEscaped());
+      QToolTip::showText(he->globalPos(), tip, this, doubtRect(doubt).toRect());
     } else {
       QToolTip::hideText();
     }
@@ -407,6 +436,7 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
   layout->addWidget(validity_);
   connect(validity_, &QLabel::linkActivated, this, [this](const QString& link) {
     if (link.startsWith(QStringLiteral("issue:"))) jumpToIssue(link.mid(6).toInt());
+    if (link.startsWith(QStringLiteral("doubt:"))) jumpToDoubt(link.mid(6).toInt());
   });
   connect(doc_, &Document::demonstrationChanged, this, &TimelinePanel::refresh);
   connect(doc_, &Document::projectLoaded, this, &TimelinePanel::refresh);
@@ -419,6 +449,29 @@ void TimelinePanel::jumpToIssue(int index) {
   if (index < 0 || index >= int(issues.size())) return;
   if (issues[index].event >= 0) doc_->selectEvent(issues[index].event);
   timeline_->setFocus();
+}
+
+void TimelinePanel::jumpToDoubt(int index) {
+  const auto& doubts = doc_->demonstration().doubts;
+  if (index < 0 || index >= int(doubts.size())) return;
+  doc_->selectEvent(-1);
+  doc_->selectObject(doubts[size_t(index)].object);
+  doc_->setCurrentFrame(doubts[size_t(index)].first_frame);
+  timeline_->setFocus();
+}
+
+int TimelinePanel::jumpToNextDoubt() {
+  const auto& doubts = doc_->demonstration().doubts;
+  if (doubts.empty()) return -1;
+  // The first one after the playhead, else the first of all (round and round with the key).
+  int next = 0;
+  for (int i = 0; i < int(doubts.size()); ++i)
+    if (doubts[size_t(i)].first_frame > doc_->currentFrame()) {
+      next = i;
+      break;
+    }
+  jumpToDoubt(next);
+  return next;
 }
 
 void TimelinePanel::refreshDetection() {
@@ -439,6 +492,15 @@ void TimelinePanel::refresh() {
     return;
   }
   const auto& issues = doc_->issues();
+  // Doubts do not break a rule; they ask for a look, so they follow the verdict.
+  QString doubts;
+  const auto& dd = doc_->demonstration().doubts;
+  if (!dd.empty())
+    doubts = tr(" <span style='color:%1'>%2 detection doubt(s) to check:</span> <a href='doubt:0'>%3</a>%4")
+                 .arg(kDoubtColor.darker(120).name())
+                 .arg(dd.size())
+                 .arg(QString::fromStdString(dd.front().message).toHtmlEscaped())
+                 .arg(dd.size() > 1 ? tr(" (Ctrl+Shift+J: the next one)") : QString());
   if (issues.empty()) {
     int low = 0;
     for (const auto& e : doc_->demonstration().events) low += e.confidence < kLowConfidence;
@@ -450,7 +512,7 @@ void TimelinePanel::refresh() {
       text += tr(" <span style='color:%1'>%2 event(s) have low confidence (dashed, amber halo): check them.</span>")
                   .arg(kWarningColor.darker(120).name())
                   .arg(low);
-    validity_->setText(text);
+    validity_->setText(text + doubts);
     return;
   }
   QStringList parts;
@@ -461,7 +523,7 @@ void TimelinePanel::refresh() {
   QString text = tr("<span style='color:%1'>&#10008; The demonstration breaks a rule:</span> ").arg(kErrorColor.name()) +
                  parts.join(QStringLiteral(" · "));
   if (issues.size() > 3) text += tr(" (and %1 more)").arg(issues.size() - 3);
-  validity_->setText(text);
+  validity_->setText(text + doubts);
 }
 
 }  // namespace demoplan::ui

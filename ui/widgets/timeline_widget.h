@@ -1,12 +1,14 @@
 #pragma once
 // The event timeline: one lane per part with its grasp (green, pointing up) and release (orange,
 // pointing down) markers, the carrying interval between them, each event's confidence, the
-// playhead, and the rule each broken event violates. Click selects, drag moves an event to
+// playhead, the rule each broken event violates, and the detection's doubts (frame ranges it
+// could not decide, hatched amber, the reason as tooltip). Click selects, drag moves an event to
 // another frame, double-click adds one, the context menu adds or deletes; every edit goes
 // through the document's undo stack.
 #include <QWidget>
 
 #include "ui/document/document.h"
+#include "ui/widgets/frame_axis.h"
 
 class QLabel;
 class QPainter;
@@ -26,11 +28,13 @@ public:
   int laneTop(int object) const;
   QRectF markerRect(int event) const;
   int eventAt(const QPointF& p) const;  // -1 when none
+  QRectF doubtRect(int doubt) const;    // of Demonstration::doubts[doubt], in its part's lane
+  int doubtAt(const QPointF& p) const;  // -1 when none
   int laneAt(double y) const;           // -1 when none
   QSize sizeHint() const override;
   QSize minimumSizeHint() const override;
 
-  static constexpr int kGutter = 112;
+  static constexpr int kGutter = FrameAxis::kGutter;
   static constexpr int kRuler = 22;
   static constexpr int kLane = 30;
 
@@ -46,6 +50,7 @@ protected:
 private:
   void paintMarker(QPainter& p, int event, double x, bool ghost) const;
   double right() const;
+  FrameAxis axis() const;
 
   Document* doc_;
   enum class Drag { None, Playhead, Event } drag_ = Drag::None;
@@ -67,6 +72,10 @@ public:
   QLabel* detectionLabel() const { return detection_; }
   // Jumps to the issue at `index` of Document::issues() (what clicking its link does).
   void jumpToIssue(int index);
+  // Selects the part of Demonstration::doubts[index] and moves the playhead to its first frame.
+  void jumpToDoubt(int index);
+  // The next doubt after the playhead (else the first); returns its index, -1 when none.
+  int jumpToNextDoubt();
 
 private:
   void refresh();
