@@ -1,5 +1,7 @@
 #include "perception/camera/camera_model.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
@@ -7,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/io/one_line.h"
+#include "perception/camera/calibration_yaml.h"
 #include "perception/io/pose_json.h"
 #include "perception/markers/marker_dictionary.h"
 
@@ -102,7 +105,25 @@ Camera load_json_camera(const std::string& path) {
   return c;
 }
 
-Camera load_opencv_camera(const std::string& path) {
+// What an OpenCV calibration file says, checked as the JSON camera is.
+Camera camera_from_calibration(const OpenCvCalibration& cal, const std::string& path) {
+  Camera c;
+  c.image_size = {cal.image_width, cal.image_height};
+  const auto& K = cal.camera_matrix;
+  c.fx = K[0];
+  c.fy = K[4];
+  c.cx = K[2];
+  c.cy = K[5];
+  check_intrinsics(c, path, "camera_matrix");
+  c.distortion = cal.distortion;
+  if (!c.distortion.empty() && !valid_distortion_count(c.distortion.size()))
+    throw InputError(path, "distortion_coefficients", "must hold 4, 5, 8, 12 or 14 coefficients");
+  return c;
+}
+
+// OpenCV calibration XML, still through cv::FileStorage: its XML parser is not known to hang,
+// but it is not fuzzed either (the YAML one hung: calibration_yaml.h reads YAML instead).
+Camera load_opencv_xml_camera(const std::string& path) {
   cv::FileStorage fs;
   try {
     if (!fs.open(path, cv::FileStorage::READ)) throw InputError(path, "", "cannot open the calibration file");
@@ -111,8 +132,6 @@ Camera load_opencv_camera(const std::string& path) {
   } catch (const cv::Exception& e) {
     throw InputError(path, "", std::string("not an OpenCV calibration file: ") + one_line(e.err));
   } catch (const std::exception& e) {
-    // OpenCV 4.6's YAML parser also lets std::length_error out of some malformed files
-    // (found by fuzz_camera_yaml).
     throw InputError(path, "", std::string("not an OpenCV calibration file: ") + one_line(e.what()));
   }
   auto node = [&](std::initializer_list<const char*> names) -> cv::FileNode {
@@ -120,7 +139,7 @@ Camera load_opencv_camera(const std::string& path) {
       if (!fs[n].empty()) return fs[n];
     return {};
   };
-  Camera c;
+  OpenCvCalibration cal;
   cv::Mat K, D;
   const std::string kname = "camera_matrix";
   try {
@@ -131,7 +150,8 @@ Camera load_opencv_camera(const std::string& path) {
       D = small_matrix(dn, path, "distortion_coefficients", 14);
     const cv::FileNode w = node({"image_width"}), h = node({"image_height"});
     if (w.empty() || h.empty()) throw InputError(path, "image_width", "missing image_width / image_height");
-    c.image_size = {positive_int(w, path, "image_width"), positive_int(h, path, "image_height")};
+    cal.image_width = positive_int(w, path, "image_width");
+    cal.image_height = positive_int(h, path, "image_height");
   } catch (const InputError&) {
     throw;
   } catch (const cv::Exception& e) {
@@ -140,20 +160,9 @@ Camera load_opencv_camera(const std::string& path) {
     throw InputError(path, kname, std::string("unreadable: ") + one_line(e.what()));
   }
   if (K.rows != 3 || K.cols != 3) throw InputError(path, kname, "must be a 3x3 matrix");
-  K.convertTo(K, CV_64F);
-  c.fx = K.at<double>(0, 0);
-  c.fy = K.at<double>(1, 1);
-  c.cx = K.at<double>(0, 2);
-  c.cy = K.at<double>(1, 2);
-  check_intrinsics(c, path, kname);
-  if (!D.empty()) {
-    D.convertTo(D, CV_64F);
-    D = D.reshape(1, 1);
-    c.distortion.assign(D.begin<double>(), D.end<double>());
-    if (!valid_distortion_count(c.distortion.size()))
-      throw InputError(path, "distortion_coefficients", "must hold 4, 5, 8, 12 or 14 coefficients");
-  }
-  return c;
+  std::copy(K.begin<double>(), K.end<double>(), cal.camera_matrix.begin());
+  if (!D.empty()) cal.distortion.assign(D.begin<double>(), D.end<double>());
+  return camera_from_calibration(cal, path);
 }
 
 }  // namespace
@@ -174,8 +183,12 @@ cv::Point2d Camera::project(const Eigen::Vector3d& p) const {
 
 Camera load_camera(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, "", "camera file not found");
-  const std::string ext = std::filesystem::path(path).extension().string();
-  return ext == ".json" ? load_json_camera(path) : load_opencv_camera(path);
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  if (ext == ".json") return load_json_camera(path);
+  if (ext == ".xml") return load_opencv_xml_camera(path);
+  // .yaml, .yml, and whatever else: OpenCV's calibration YAML, with our reader.
+  return camera_from_calibration(read_calibration_yaml(path), path);
 }
 
 void save_camera(const std::string& path, const Camera& c) {
