@@ -85,13 +85,14 @@ InputError error_of(const std::string& path) {
 }  // namespace
 
 TEST_F(CalibrationYamlTest, TheRepositorysFilesReadAsWithFileStorage) {
-  std::vector<fs::path> files;
-  for (const fs::path& dir : {kSource / "tests/fuzz/corpus/camera_yaml", kSource / "tests/data/bad/camera"})
-    for (const auto& e : fs::directory_iterator(dir))
-      if (e.path().extension() == ".yaml" || e.path().extension() == ".yml") files.push_back(e.path());
-  ASSERT_GE(files.size(), 4u);
+  // Named, not globbed: the corpus also holds fuzzer inputs, which OpenCV's parser may hang on.
+  const std::vector<fs::path> files{kSource / "tests/fuzz/corpus/camera_yaml/good.yaml",
+                                    kSource / "tests/fuzz/corpus/camera_yaml/ros_names.yml",
+                                    kSource / "tests/fuzz/corpus/camera_yaml/singular.yaml",
+                                    kSource / "tests/data/bad/camera/singular.yaml"};
   for (const fs::path& f : files) {
     SCOPED_TRACE(f.string());
+    ASSERT_TRUE(fs::is_regular_file(f));
     expect_same(read_calibration_yaml(f.string()), read_with_file_storage(f.string()));
   }
   // And the numbers themselves, for the sample-like file.
