@@ -14,8 +14,8 @@
 // world_T_camera maps camera coordinates to world coordinates (metres). Without it the pose
 // comes from the board, found in the video. OpenCV calibration files (.yaml, .yml, .xml with
 // camera_matrix / distortion_coefficients / image_width / image_height, as the OpenCV
-// calibration sample writes them) are read too; they carry intrinsics only. YAML is read by our
-// own reader (calibration_yaml.h), XML by cv::FileStorage.
+// calibration sample writes them) are read too; they carry intrinsics only, and are read by our
+// own readers (calibration_yaml.h, calibration_xml.h), not by cv::FileStorage.
 #include <optional>
 #include <string>
 #include <vector>
