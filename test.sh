@@ -25,10 +25,8 @@ cd ..
 # the sanitizer run skips it (the fuzz targets have their own ASan + UBSan build).
 fuzz_total="${FUZZ_TOTAL_SECONDS:-60}"
 if [ -z "${DEMOPLAN_SANITIZE:-}" ] && [ "$fuzz_total" -gt 0 ]; then
-  # camera_yaml is left out here: OpenCV 4.6's YAML parser hangs on some inputs
-  # (tests/fuzz/known-hangs), which a short run may hit by chance; scripts/fuzz.sh runs it.
   targets=()
-  for f in tests/fuzz/fuzz_*.cpp; do t="${f##*/fuzz_}"; t="${t%.cpp}"; [ "$t" = camera_yaml ] || targets+=("$t"); done
+  for f in tests/fuzz/fuzz_*.cpp; do t="${f##*/fuzz_}"; targets+=("${t%.cpp}"); done
   each=$((fuzz_total / ${#targets[@]})); [ "$each" -ge 1 ] || each=1
   ./scripts/fuzz.sh "$each" "${targets[@]}" || status=1
 fi

@@ -35,13 +35,13 @@ max_len() {
   case "$1" in
     task) echo 49152 ;;
     urdf) echo 20480 ;;
-    bop_csv | hand_detections | camera | camera_yaml) echo 4096 ;;
+    bop_csv | hand_detections | camera | camera_yaml | camera_xml) echo 4096 ;;
     *) echo 8192 ;;
   esac
 }
 dict() {
   case "$1" in
-    urdf | srdf) echo "-dict=tests/fuzz/xml.dict" ;;
+    urdf | srdf | camera_xml) echo "-dict=tests/fuzz/xml.dict" ;;
     bop_csv | camera_yaml) ;;
     *) echo "-dict=tests/fuzz/json.dict" ;;
   esac

@@ -1,12 +1,15 @@
 #include "perception/camera/camera_model.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
 #include <opencv2/calib3d.hpp>
 
 #include "core/error.h"
-#include "core/io/one_line.h"
+#include "perception/camera/calibration_xml.h"
+#include "perception/camera/calibration_yaml.h"
 #include "perception/io/pose_json.h"
 #include "perception/markers/marker_dictionary.h"
 
@@ -24,35 +27,6 @@ void check_intrinsics(const Camera& c, const std::string& path, const std::strin
   if (!(c.fx > 0) || !(c.fy > 0)) throw InputError(path, field, "focal lengths must be > 0");
   if (!std::isfinite(c.fx) || !std::isfinite(c.fy) || !std::isfinite(c.cx) || !std::isfinite(c.cy))
     throw InputError(path, field, "fx, fy, cx and cy must be finite numbers");
-}
-
-// An !!opencv-matrix node (rows, cols, dt, data) of at most `max_elements` numbers, read here
-// rather than by OpenCV's `node >> mat`, which allocates rows x cols before it looks at the data:
-// a calibration file saying "cols: 2147483647" asked for 16 GB (found by fuzz_camera_yaml).
-cv::Mat small_matrix(const cv::FileNode& n, const std::string& path, const std::string& field, int max_elements) {
-  if (!n.isMap()) throw InputError(path, field, "must be an !!opencv-matrix (rows, cols, dt, data)");
-  const cv::FileNode rows = n["rows"], cols = n["cols"], data = n["data"];
-  if (!rows.isInt() || !cols.isInt()) throw InputError(path, field, "rows and cols must be integers");
-  const int r = static_cast<int>(rows), c = static_cast<int>(cols);
-  if (r < 1 || c < 1 || r > max_elements || c > max_elements || r * c > max_elements)
-    throw InputError(path, field, "must have at most " + std::to_string(max_elements) + " elements (rows x cols)");
-  if (!data.isSeq() || static_cast<int>(data.size()) != r * c)
-    throw InputError(path, field, "data must hold rows x cols = " + std::to_string(r * c) + " numbers");
-  cv::Mat m(r, c, CV_64F);
-  int i = 0;
-  for (const cv::FileNode& v : data) {
-    if (!v.isInt() && !v.isReal()) throw InputError(path, field, "data[" + std::to_string(i) + "] is not a number");
-    const double x = v.isInt() ? static_cast<double>(static_cast<int>(v)) : static_cast<double>(v);
-    if (!std::isfinite(x)) throw InputError(path, field, "data[" + std::to_string(i) + "] is not a finite number");
-    m.at<double>(i / c, i % c) = x;
-    ++i;
-  }
-  return m;
-}
-
-int positive_int(const cv::FileNode& n, const std::string& path, const std::string& field) {
-  if (!n.isInt() || static_cast<int>(n) <= 0) throw InputError(path, field, "must be a positive integer");
-  return static_cast<int>(n);
 }
 
 MarkerBoard board_from_json(const JsonField& b) {
@@ -102,57 +76,19 @@ Camera load_json_camera(const std::string& path) {
   return c;
 }
 
-Camera load_opencv_camera(const std::string& path) {
-  cv::FileStorage fs;
-  try {
-    if (!fs.open(path, cv::FileStorage::READ)) throw InputError(path, "", "cannot open the calibration file");
-  } catch (const InputError&) {
-    throw;
-  } catch (const cv::Exception& e) {
-    throw InputError(path, "", std::string("not an OpenCV calibration file: ") + one_line(e.err));
-  } catch (const std::exception& e) {
-    // OpenCV 4.6's YAML parser also lets std::length_error out of some malformed files
-    // (found by fuzz_camera_yaml).
-    throw InputError(path, "", std::string("not an OpenCV calibration file: ") + one_line(e.what()));
-  }
-  auto node = [&](std::initializer_list<const char*> names) -> cv::FileNode {
-    for (const char* n : names)
-      if (!fs[n].empty()) return fs[n];
-    return {};
-  };
+// What an OpenCV calibration file says, checked as the JSON camera is.
+Camera camera_from_calibration(const OpenCvCalibration& cal, const std::string& path) {
   Camera c;
-  cv::Mat K, D;
-  const std::string kname = "camera_matrix";
-  try {
-    const cv::FileNode kn = node({"camera_matrix", "cameraMatrix", "K"});
-    if (kn.empty()) throw InputError(path, kname, "missing (also looked for cameraMatrix, K)");
-    K = small_matrix(kn, path, kname, 9);
-    if (const cv::FileNode dn = node({"distortion_coefficients", "dist_coeffs", "distCoeffs", "D"}); !dn.empty())
-      D = small_matrix(dn, path, "distortion_coefficients", 14);
-    const cv::FileNode w = node({"image_width"}), h = node({"image_height"});
-    if (w.empty() || h.empty()) throw InputError(path, "image_width", "missing image_width / image_height");
-    c.image_size = {positive_int(w, path, "image_width"), positive_int(h, path, "image_height")};
-  } catch (const InputError&) {
-    throw;
-  } catch (const cv::Exception& e) {
-    throw InputError(path, kname, std::string("unreadable: ") + one_line(e.err));
-  } catch (const std::exception& e) {
-    throw InputError(path, kname, std::string("unreadable: ") + one_line(e.what()));
-  }
-  if (K.rows != 3 || K.cols != 3) throw InputError(path, kname, "must be a 3x3 matrix");
-  K.convertTo(K, CV_64F);
-  c.fx = K.at<double>(0, 0);
-  c.fy = K.at<double>(1, 1);
-  c.cx = K.at<double>(0, 2);
-  c.cy = K.at<double>(1, 2);
-  check_intrinsics(c, path, kname);
-  if (!D.empty()) {
-    D.convertTo(D, CV_64F);
-    D = D.reshape(1, 1);
-    c.distortion.assign(D.begin<double>(), D.end<double>());
-    if (!valid_distortion_count(c.distortion.size()))
-      throw InputError(path, "distortion_coefficients", "must hold 4, 5, 8, 12 or 14 coefficients");
-  }
+  c.image_size = {cal.image_width, cal.image_height};
+  const auto& K = cal.camera_matrix;
+  c.fx = K[0];
+  c.fy = K[4];
+  c.cx = K[2];
+  c.cy = K[5];
+  check_intrinsics(c, path, "camera_matrix");
+  c.distortion = cal.distortion;
+  if (!c.distortion.empty() && !valid_distortion_count(c.distortion.size()))
+    throw InputError(path, "distortion_coefficients", "must hold 4, 5, 8, 12 or 14 coefficients");
   return c;
 }
 
@@ -174,8 +110,14 @@ cv::Point2d Camera::project(const Eigen::Vector3d& p) const {
 
 Camera load_camera(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, "", "camera file not found");
-  const std::string ext = std::filesystem::path(path).extension().string();
-  return ext == ".json" ? load_json_camera(path) : load_opencv_camera(path);
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  if (ext == ".json") return load_json_camera(path);
+  // OpenCV calibration files, with our readers: cv::FileStorage's parsers hang or crash on some
+  // malformed files (calibration_yaml.h, calibration_xml.h).
+  if (ext == ".xml") return camera_from_calibration(read_calibration_xml(path), path);
+  // .yaml, .yml, and whatever else: OpenCV's calibration YAML.
+  return camera_from_calibration(read_calibration_yaml(path), path);
 }
 
 void save_camera(const std::string& path, const Camera& c) {

@@ -14,7 +14,8 @@
 // world_T_camera maps camera coordinates to world coordinates (metres). Without it the pose
 // comes from the board, found in the video. OpenCV calibration files (.yaml, .yml, .xml with
 // camera_matrix / distortion_coefficients / image_width / image_height, as the OpenCV
-// calibration sample writes them) are read too; they carry intrinsics only.
+// calibration sample writes them) are read too; they carry intrinsics only, and are read by our
+// own readers (calibration_yaml.h, calibration_xml.h), not by cv::FileStorage.
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,7 +40,7 @@ struct Camera {
   cv::Point2d project(const Eigen::Vector3d& p_camera) const;
 };
 
-// Reads either format (by extension: .json, else OpenCV FileStorage). Throws InputError.
+// Reads either format (by extension: .json; .xml; else OpenCV calibration YAML). Throws InputError.
 Camera load_camera(const std::string& path);
 // Writes "demoplan-camera" version 1, atomically.
 void save_camera(const std::string& path, const Camera& camera);

@@ -1,5 +1,5 @@
 // libFuzzer target: an OpenCV calibration YAML file (perception/camera/camera_model.h, load_camera;
-// OpenCV's FileStorage parses it, our code reads the nodes).
+// our reader parses it, perception/camera/calibration_yaml.h; it was cv::FileStorage until that hung).
 // Any input must load or throw InputError naming the file (tests/fuzz/fuzz_input.h).
 #include "perception/camera/camera_model.h"
 #include "tests/fuzz/fuzz_input.h"

@@ -154,6 +154,12 @@ TEST_F(FuzzRegressions, CameraYaml) {
             0u);
 }
 
+TEST_F(FuzzRegressions, CameraXml) {
+  EXPECT_GT(expect_each_input_loads_or_fails_cleanly("camera_xml", scratch.dir / "input.xml",
+                                                     [](const std::string& f) { perception::load_camera(f); }),
+            0u);
+}
+
 TEST_F(FuzzRegressions, MarkerScene) {
   EXPECT_GT(expect_each_input_loads_or_fails_cleanly("marker_scene", scratch.dir / "input.json",
                                                      [](const std::string& f) { perception::load_marker_scene(f); }),
@@ -181,7 +187,7 @@ TEST_F(FuzzRegressions, Tracks) {
 // Every fuzz target has a test above: a new tests/fuzz/fuzz_<target>.cpp needs one here too.
 TEST(FuzzRegressionsCoverage, EveryFuzzTargetIsReplayed) {
   const std::vector<std::string> replayed{"project", "demonstration", "path",         "urdf",    "srdf",
-                                          "task",    "camera",        "camera_yaml",  "marker_scene",
+                                          "task",    "camera",        "camera_yaml",  "camera_xml", "marker_scene",
                                           "bop_csv", "hand_detections", "tracks"};
   for (const auto& e : fs::directory_iterator(kSource / "tests/fuzz")) {
     const std::string name = e.path().filename().string();
