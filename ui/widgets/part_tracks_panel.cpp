@@ -95,8 +95,9 @@ void PartTracksPanel::refreshSummary() {
     rides += s.kind == perception::SegmentKind::Ride;
   }
   // The noise decides how wide a rest is: worth seeing next to the curves.
-  QString text = tr("%1 rests, %2 carries").arg(rests).arg(carries);
-  if (rides > 0) text += tr(", %1 rides").arg(rides);
+  auto count = [](int n, const QString& one, const QString& many) { return QString::number(n) + " " + (n == 1 ? one : many); };
+  QString text = count(rests, tr("rest"), tr("rests")) + ", " + count(carries, tr("carry"), tr("carries"));
+  if (rides > 0) text += ", " + count(rides, tr("ride"), tr("rides"));
   text += tr(" · noise σ %1–%2 mm, %3° · %4 usable frames")
               .arg(o.noise.sigma_min * 1000, 0, 'f', 1)
               .arg(o.noise.sigma_max * 1000, 0, 'f', 1)
