@@ -16,7 +16,9 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Longest run of samples a rest's centre and cost are computed from: longer rests are
 // subsampled evenly, which keeps the segmentation quadratic in the video's length.
-constexpr int kMaxSamples = 96;
+constexpr int kMaxSamples = 48;
+// Longest piece the cut considers at once (frames); longer rests and motions are chains.
+constexpr int kLongest = 200;
 // Frames around a carrier's start or stop searched for where a carry onto or off it ends.
 constexpr int kRideSearch = 6;
 
@@ -51,6 +53,8 @@ struct Track {
   std::vector<Pose> pose;
   int count = 0;
   std::vector<Eigen::Vector3d> white;  // positions whitened by the track's noise
+  std::vector<int> seen_frames;        // the usable frames, in order
+  std::vector<int> seen_before;        // per frame, how many usable frames come before it
 };
 
 Track usable_track(const std::vector<PoseSample>& samples, int row, const std::string& id,
@@ -137,19 +141,24 @@ struct Piece {
 void whiten(Track& t, const TrackNoise& noise) {
   const Eigen::Matrix3d L = noise.covariance.llt().matrixL();
   t.white.assign(t.usable.size(), Eigen::Vector3d::Zero());
-  for (size_t f = 0; f < t.usable.size(); ++f)
-    if (t.usable[f]) t.white[f] = L.triangularView<Eigen::Lower>().solve(t.position[f]);
+  t.seen_frames.clear();
+  t.seen_before.assign(t.usable.size() + 1, 0);
+  for (size_t f = 0; f < t.usable.size(); ++f) {
+    t.seen_before[f + 1] = t.seen_before[f] + (t.usable[f] ? 1 : 0);
+    if (!t.usable[f]) continue;
+    t.white[f] = L.triangularView<Eigen::Lower>().solve(t.position[f]);
+    t.seen_frames.push_back(static_cast<int>(f));
+  }
 }
 
-// A rest's samples over [a, b) (subsampled when long), whitened.
+// A rest's samples over [a, b) (every stride-th when long), whitened: at most kMaxSamples,
+// picked without walking the frames, so that a cost is independent of the rest's length.
 std::vector<Eigen::Vector3d> rest_samples(const Track& t, int a, int b) {
-  int count = 0;
-  for (int f = a; f < b; ++f) count += t.usable[f];
+  const int first = t.seen_before[a], count = t.seen_before[b] - first;
   const int stride = std::max(1, (count + kMaxSamples - 1) / kMaxSamples);
   std::vector<Eigen::Vector3d> pts;
-  int k = 0;
-  for (int f = a; f < b; ++f)
-    if (t.usable[f] && k++ % stride == 0) pts.push_back(t.white[f]);
+  pts.reserve(static_cast<size_t>(count / stride + 1));
+  for (int k = 0; k < count; k += stride) pts.push_back(t.white[t.seen_frames[first + k]]);
   return pts;
 }
 
@@ -192,23 +201,39 @@ std::vector<Piece> cut(const Track& t, const TrackNoise& noise, const TrackSegme
     return (sum / static_cast<double>(pts.size()) + 3.0 * std::log(spread)) * count + missing;
   };
   // best[b][k]: cheapest cut of [0, b) whose last piece is a rest (k = 0) or a motion (k = 1).
+  // A piece is at most kLongest frames; a longer rest or motion is a chain of pieces of exactly
+  // kLongest and a last shorter one (joined again below), which keeps the cut linear in the
+  // video's length and leaves shorter videos' cuts as they were.
   std::vector<std::array<double, 2>> best(n + 1, {kInf, kInf});
-  std::vector<std::array<int, 2>> from(n + 1, {-1, -1});
+  std::vector<std::array<int, 2>> from(n + 1, {-1, -1}), from_kind(n + 1, {-1, -1});
   best[0] = {0.0, 0.0};
   for (int b = 1; b <= n; ++b)
-    for (int a = 0; a < b; ++a) {
-      const double rest = (a == 0 ? 0.0 : best[a][1]) + rest_cost(a, b);
-      if (rest < best[b][0]) best[b][0] = rest, from[b][0] = a;
-      const double motion = (a == 0 ? 0.0 : best[a][0]) + motion_cost * (seen[b] - seen[a]) + o.motion_penalty;
-      if (motion < best[b][1]) best[b][1] = motion, from[b][1] = a;
+    for (int a = std::max(0, b - kLongest); a < b; ++a) {
+      // What may come before: the other kind, or a full-length piece of the same kind.
+      for (int before = 0; before < 2; ++before) {
+        if (a > 0 && best[a][before] == kInf) continue;
+        const bool full = a > 0 && from[a][before] == a - kLongest;
+        for (int kind = 0; kind < 2; ++kind) {
+          if (a > 0 && before == kind && !full) continue;
+          const bool continues = a > 0 && before == kind;
+          const double piece = kind == 0 ? rest_cost(a, b)
+                                         : motion_cost * (seen[b] - seen[a]) + (continues ? 0.0 : o.motion_penalty);
+          const double total = (a == 0 ? 0.0 : best[a][before]) + piece;
+          if (total < best[b][kind]) best[b][kind] = total, from[b][kind] = a, from_kind[b][kind] = a == 0 ? -1 : before;
+        }
+        if (a == 0) break;
+      }
     }
   std::vector<Piece> pieces;
   int kind = best[n][0] <= best[n][1] ? 0 : 1;
   for (int b = n; b > 0;) {
     const int a = from[b][kind];
-    pieces.push_back({kind == 0, a, b - 1});
+    if (!pieces.empty() && pieces.back().rest == (kind == 0))
+      pieces.back().first = a;  // a chained piece: one rest or motion with the one after it
+    else
+      pieces.push_back({kind == 0, a, b - 1});
+    kind = from_kind[b][kind];
     b = a;
-    kind = 1 - kind;
   }
   std::reverse(pieces.begin(), pieces.end());
   return pieces;
@@ -400,9 +425,21 @@ const char* segment_kind_name(SegmentKind kind) {
   return "?";
 }
 
-TrackSegmentation segment_tracks(const PoseTracks& tracks, const TrackSegmentationOptions& o) {
+TrackSegmentation segment_tracks(const PoseTracks& tracks_in, const TrackSegmentationOptions& o) {
   TrackSegmentation out;
-  const size_t n = tracks.object_ids.size();
+  const size_t n = tracks_in.object_ids.size();
+  // A part without a planning flag counts as a planning part.
+  PoseTracks flagged;
+  const bool complete = tracks_in.planning.size() >= n;
+  if (!complete) {
+    flagged.object_ids = tracks_in.object_ids;
+    flagged.frames = tracks_in.frames;
+    flagged.fps = tracks_in.fps;
+    flagged.samples = tracks_in.samples;
+    flagged.planning = tracks_in.planning;
+    flagged.planning.resize(n, true);
+  }
+  const PoseTracks& tracks = complete ? tracks_in : flagged;
   std::vector<Track> ts;
   std::vector<std::vector<TrackSegment>> segs(n);
   out.objects.resize(n);
