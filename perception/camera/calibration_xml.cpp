@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/io/one_line.h"
 #include "core/model/xml_text.h"
+#include "perception/camera/opencv_number.h"
 
 namespace demoplan::perception {
 
@@ -41,29 +42,6 @@ std::string_view text_of(const TiXmlElement& e) {
   return t ? trim(t) : std::string_view();
 }
 
-std::optional<int> parse_int(std::string_view s) {
-  if (!s.empty() && s[0] == '+') s.remove_prefix(1);
-  int x = 0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), x);
-  if (s.empty() || ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
-  return x;
-}
-
-// A number as OpenCV writes one: "900.", "-2.6e-01", ".nan" / ".inf" (not finite).
-std::optional<double> parse_number(std::string_view s) {
-  if (!s.empty() && s[0] == '+') s.remove_prefix(1);
-  std::string_view word = s;
-  if (!word.empty() && word[0] == '-') word.remove_prefix(1);
-  for (const char* w : {".nan", ".NaN", ".NAN", ".Nan", ".inf", ".Inf", ".INF"})
-    if (word == w) return std::numeric_limits<double>::quiet_NaN();
-  double x = 0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), x);
-  if (s.empty() || end != s.data() + s.size()) return std::nullopt;
-  if (ec == std::errc::result_out_of_range) return std::numeric_limits<double>::infinity();
-  if (ec != std::errc()) return std::nullopt;
-  return x;
-}
-
 class XmlCalibration {
 public:
   XmlCalibration(std::string path, const TiXmlElement& root) : path_(std::move(path)), root_(root) {}
@@ -75,7 +53,7 @@ public:
   }
 
   int positive_int(const TiXmlElement& e) const {
-    const std::optional<int> x = parse_int(text_of(e));
+    const std::optional<int> x = parse_opencv_int(text_of(e));
     if (!x || *x <= 0)
       throw InputError(path_, one_line(e.Value()), line_of(e) + ": must be a positive integer, not " + quote(text_of(e)));
     return *x;
@@ -89,7 +67,7 @@ public:
     const TiXmlElement *re = e.FirstChildElement("rows"), *ce = e.FirstChildElement("cols"),
                        *de = e.FirstChildElement("data");
     if (!re || !ce || !de) throw InputError(path_, key, at + "must be an opencv-matrix (rows, cols, dt, data)");
-    const std::optional<int> r = parse_int(text_of(*re)), c = parse_int(text_of(*ce));
+    const std::optional<int> r = parse_opencv_int(text_of(*re)), c = parse_opencv_int(text_of(*ce));
     if (!r || !c) throw InputError(path_, key, at + "rows and cols must be integers");
     if (*r < 1 || *c < 1 || *r > max_elements || *c > max_elements || *r * *c > max_elements)
       throw InputError(path_, key, at + "must have at most " + std::to_string(max_elements) + " elements (rows x cols)");
@@ -104,7 +82,7 @@ public:
       const size_t stop = std::min(d.find_first_of(" \t\r\n", k), d.size());
       const std::string_view item = d.substr(k, stop - k);
       const std::string index = data_at + "[" + std::to_string(out.size()) + "]";
-      const std::optional<double> x = parse_number(item);
+      const std::optional<double> x = parse_opencv_number(item);
       if (!x) throw InputError(path_, key, index + " is not a number: " + quote(item));
       if (!std::isfinite(*x)) throw InputError(path_, key, index + " is not a finite number");
       out.push_back(*x);

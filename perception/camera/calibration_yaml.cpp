@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "core/io/one_line.h"
+#include "perception/camera/opencv_number.h"
 
 namespace demoplan::perception {
 
@@ -297,27 +298,7 @@ private:
 
 std::optional<int> parse_int(const Entry& e) {
   if (e.quoted) return std::nullopt;
-  std::string_view s = e.value;
-  if (!s.empty() && s[0] == '+') s.remove_prefix(1);
-  int x = 0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), x);
-  if (s.empty() || ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
-  return x;
-}
-
-// A number as OpenCV writes one: "900.", "-2.6e-01", "1", or ".nan" / ".inf" (not finite).
-std::optional<double> parse_number(std::string_view s) {
-  if (!s.empty() && s[0] == '+') s.remove_prefix(1);
-  std::string_view word = s;
-  if (!word.empty() && word[0] == '-') word.remove_prefix(1);
-  for (const char* w : {".nan", ".NaN", ".NAN", ".Nan", ".inf", ".Inf", ".INF"})
-    if (word == w) return std::numeric_limits<double>::quiet_NaN();
-  double x = 0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), x);
-  if (s.empty() || end != s.data() + s.size()) return std::nullopt;
-  if (ec == std::errc::result_out_of_range) return std::numeric_limits<double>::infinity();
-  if (ec != std::errc()) return std::nullopt;
-  return x;
+  return parse_opencv_int(e.value);
 }
 
 // Reads the keys of an OpenCV calibration file from the reader's top-level mapping.
@@ -375,7 +356,7 @@ public:
       if (comma == std::string_view::npos) comma = inner.size();
       const std::string_view item = trim(inner.substr(start, comma - start));
       const std::string index = data_at + "[" + std::to_string(out.size()) + "]";
-      const std::optional<double> x = parse_number(item);
+      const std::optional<double> x = parse_opencv_number(item);
       if (!x) throw InputError(path, key, index + " is not a number: " + quote(item));
       if (!std::isfinite(*x)) throw InputError(path, key, index + " is not a finite number");
       out.push_back(*x);
