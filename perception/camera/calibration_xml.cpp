@@ -16,13 +16,12 @@
 #include "core/error.h"
 #include "core/io/one_line.h"
 #include "core/model/xml_text.h"
-#include "perception/camera/opencv_number.h"
+#include "perception/camera/calibration_text.h"
 
 namespace demoplan::perception {
 
 namespace {
 
-constexpr size_t kMaxFileBytes = 4u << 20;  // as for YAML: a calibration file is a few kB
 
 std::string line_of(const TiXmlElement& e) { return "line " + std::to_string(e.Row()); }
 
@@ -101,24 +100,11 @@ private:
   const TiXmlElement& root_;
 };
 
-std::string read_text(const std::string& path) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec && size > kMaxFileBytes)
-    throw InputError(path, "", "larger than " + std::to_string(kMaxFileBytes >> 20) + " MiB: not a calibration file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open the calibration file");
-  std::string text(ec ? kMaxFileBytes : static_cast<size_t>(size), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<size_t>(in.gcount()));
-  return text;
-}
-
 }  // namespace
 
 OpenCvCalibration read_calibration_xml(const std::string& path) {
   TiXmlDocument doc;
-  const std::string text = padded_for_tinyxml(read_text(path));
+  const std::string text = padded_for_tinyxml(read_calibration_text(path));
   doc.Parse(text.c_str());
   if (doc.Error())
     throw InputError(path, doc.ErrorRow() > 0 ? "line " + std::to_string(doc.ErrorRow()) : "",

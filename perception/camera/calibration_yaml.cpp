@@ -13,7 +13,7 @@
 
 #include "core/error.h"
 #include "core/io/one_line.h"
-#include "perception/camera/opencv_number.h"
+#include "perception/camera/calibration_text.h"
 
 namespace demoplan::perception {
 
@@ -21,7 +21,6 @@ namespace {
 
 // A calibration file is a few kB; the calibration sample's image points for 100 views are
 // ~200 kB. The cap bounds the reader's time and memory on whatever a user opens.
-constexpr size_t kMaxFileBytes = 4u << 20;
 
 std::string line_at(int number) { return "line " + std::to_string(number); }
 
@@ -375,24 +374,10 @@ private:
   std::map<std::string, Entry> top_;
 };
 
-std::string read_text(const std::string& path) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec && size > kMaxFileBytes)
-    throw InputError(path, "", "larger than " + std::to_string(kMaxFileBytes >> 20) + " MiB: not a calibration file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open the calibration file");
-  // At most the cap, also if the file grew since its size was taken.
-  std::string text(ec ? kMaxFileBytes : static_cast<size_t>(size), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<size_t>(in.gcount()));
-  return text;
-}
-
 }  // namespace
 
 OpenCvCalibration read_calibration_yaml(const std::string& path) {
-  Reader reader(path, read_text(path));
+  Reader reader(path, read_calibration_text(path));
   const Calibration cal(reader);
   OpenCvCalibration out;
   const Entry* k = cal.find({"camera_matrix", "cameraMatrix", "K"});
