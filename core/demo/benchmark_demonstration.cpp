@@ -165,7 +165,7 @@ Demonstration demonstration_from_segments(const BenchmarkTask& task, const Scene
   for (size_t k = 0; k < segments.size(); ++k) {
     const auto& s = segments[k];
     if (s.object < 0 || s.object >= static_cast<int>(task.planning_object_ids.size()) || s.first < 0 ||
-        s.last < s.first || s.last + 1 >= task.frames + 1)
+        s.last < s.first || s.last >= task.frames)
       throw InputError(task.file, "segments[" + std::to_string(k) + "]",
                        "object " + std::to_string(s.object) + ", frames " + std::to_string(s.first) + "-" +
                            std::to_string(s.last) + " are outside the task's objects or its " +

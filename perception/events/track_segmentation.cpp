@@ -331,7 +331,7 @@ struct Ride {
 // a part outside the plan (a tray) if one qualifies, else a planning part moving with it: parts
 // that move together ride on a support, tracked or not (the hand carries one part at a time).
 std::optional<Ride> find_ride(int o, const TrackSegment& motion, const std::vector<Track>& tracks,
-                              const std::vector<std::vector<TrackSegment>>& segs, const PoseTracks& pose_tracks,
+                              const std::vector<std::vector<TrackSegment>>& segs, const std::vector<bool>& planning,
                               const TrackSegmentationOptions& opt) {
   std::optional<Ride> best;
   double best_rank = kInf;
@@ -349,7 +349,7 @@ std::optional<Ride> find_ride(int o, const TrackSegment& motion, const std::vect
       const double moved = dc.head<2>().norm();
       if (moved < opt.min_carry_distance) continue;
       if ((d_o - dc).head<2>().norm() > opt.ride_tolerance * moved) continue;
-      const bool tray = !pose_tracks.planning[c];
+      const bool tray = !planning[c];
       const double rank = tray ? -1.0 : static_cast<double>(c);
       if (rank < best_rank) best_rank = rank, best = Ride{static_cast<int>(c), first, last};
     }
@@ -425,21 +425,12 @@ const char* segment_kind_name(SegmentKind kind) {
   return "?";
 }
 
-TrackSegmentation segment_tracks(const PoseTracks& tracks_in, const TrackSegmentationOptions& o) {
+TrackSegmentation segment_tracks(const PoseTracks& tracks, const TrackSegmentationOptions& o) {
   TrackSegmentation out;
-  const size_t n = tracks_in.object_ids.size();
+  const size_t n = tracks.object_ids.size();
   // A part without a planning flag counts as a planning part.
-  PoseTracks flagged;
-  const bool complete = tracks_in.planning.size() >= n;
-  if (!complete) {
-    flagged.object_ids = tracks_in.object_ids;
-    flagged.frames = tracks_in.frames;
-    flagged.fps = tracks_in.fps;
-    flagged.samples = tracks_in.samples;
-    flagged.planning = tracks_in.planning;
-    flagged.planning.resize(n, true);
-  }
-  const PoseTracks& tracks = complete ? tracks_in : flagged;
+  std::vector<bool> planning = tracks.planning;
+  planning.resize(n, true);
   std::vector<Track> ts;
   std::vector<std::vector<TrackSegment>> segs(n);
   out.objects.resize(n);
@@ -462,7 +453,7 @@ TrackSegmentation segment_tracks(const PoseTracks& tracks_in, const TrackSegment
   for (size_t i = 0; i < n; ++i)
     for (size_t k = 1; k + 1 < segs[i].size(); ++k) {
       if (segs[i][k].kind != SegmentKind::Carry) continue;
-      if (auto ride = find_ride(static_cast<int>(i), segs[i][k], ts, segs, tracks, o)) {
+      if (auto ride = find_ride(static_cast<int>(i), segs[i][k], ts, segs, planning, o)) {
         split_at_ride(segs[i], k, *ride, ts[i], out.objects[i].noise, o);
         ++k;
       }
@@ -474,7 +465,7 @@ TrackSegmentation segment_tracks(const PoseTracks& tracks_in, const TrackSegment
   std::vector<Ref> carries;
   for (size_t i = 0; i < n; ++i)
     for (size_t k = 0; k < segs[i].size(); ++k)
-      if (tracks.planning[i] && segs[i][k].kind == SegmentKind::Carry) carries.push_back({i, k});
+      if (planning[i] && segs[i][k].kind == SegmentKind::Carry) carries.push_back({i, k});
   for (const Ref& a : carries)
     for (const Ref& b : carries) {
       TrackSegment& x = segs[a.object][a.index];
@@ -517,7 +508,7 @@ TrackSegmentation segment_tracks(const PoseTracks& tracks_in, const TrackSegment
         out.doubts.push_back({static_cast<int>(i), m.first, m.last,
                               id + " still moves when the video ends (" + frames_text(m.first, m.last) +
                                   "): the carry ends nowhere"});
-      else if (m.kind == SegmentKind::Carry && seen_in(ts[i], m.first, m.last) == 0 && tracks.planning[i])
+      else if (m.kind == SegmentKind::Carry && seen_in(ts[i], m.first, m.last) == 0 && planning[i])
         out.doubts.push_back({static_cast<int>(i), m.first, m.last,
                               id + " is seen resting at two places with no motion between (" +
                                   frames_text(m.first, m.last) + " unseen): a carry is assumed"});
@@ -546,7 +537,7 @@ ContactAnalysis TrackSegmentation::contacts(const PoseTracks& tracks) const {
       // Grasp: the last frame at rest before; release: the first frame at rest after.
       const MotionInterval m{static_cast<int>(i), std::max(s[k].first - 1, 0),
                              std::min(s[k].last + 1, std::max(tracks.frames - 1, 0)), 1.0, 1.0, s[k].distance};
-      if (s[k].kind == SegmentKind::Carry && i < tracks.planning.size() && tracks.planning[i]) c.carries.push_back(m);
+      if (s[k].kind == SegmentKind::Carry && (i >= tracks.planning.size() || tracks.planning[i])) c.carries.push_back(m);
       if (s[k].kind == SegmentKind::Ride) c.transports.push_back(m);
       if (s[k].kind == SegmentKind::Moving && k > 0 && k + 1 < s.size()) c.rejected.push_back(m);
     }
