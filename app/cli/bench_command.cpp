@@ -39,6 +39,7 @@ struct BenchOptions {
   double time_limit = 60.0;
   double waiter_time_limit = 300.0;
   std::string from = "subgoals";
+  std::string handles = "srdf";
   std::string planner = "guided";
   std::string compare;  // planners run alternately on the same runs, e.g. "guided,unguided"
   int jobs = 1;
@@ -121,7 +122,7 @@ int run_bench(const BenchOptions& o) {
       const std::vector<int> available = benchmark_pose_ids(task, robot);
       for (int pose : poses) {
         if (std::find(available.begin(), available.end(), pose) == available.end()) continue;
-        auto scene = std::make_shared<const Scene>(build_benchmark_scene(task, robot, pose, {.mesh_cache = &meshes}));
+        auto scene = benchmark_scene_with_handles(task, robot, pose, o.handles, &meshes);
         auto in = std::make_unique<Instance>();
         in->problem = make_task_instance(task, scene, o.from).problem;
         instances[{task_name, robot, pose}] = std::move(in);
@@ -264,7 +265,7 @@ int run_bench(const BenchOptions& o) {
                      {"shortened_path_length_rad", r.shortened.length.robot}, {"grasps", r.raw.grasps}});
       if (!r.regrasp.empty()) all.back()["regrasp"] = r.regrasp;
     }
-    write_json_file_atomic(o.out, {{"format", "demoplan-bench"}, {"version", 1}, {"from", o.from}, {"rows", rows},
+    write_json_file_atomic(o.out, {{"format", "demoplan-bench"}, {"version", 1}, {"from", o.from}, {"handles", o.handles}, {"rows", rows},
                                   {"comparisons", comparisons}, {"runs", all}});
   }
   if (!o.ompl_log.empty()) {
@@ -292,6 +293,7 @@ Command register_bench_command(CLI::App& app) {
   sub->add_option("--waiter-time-limit", opts->waiter_time_limit, "seconds per run of the waiter task (paper: 300)")
       ->capture_default_str();
   add_from_option(*sub, opts->from);
+  add_handles_option(*sub, opts->handles);
   sub->add_option("--planner", opts->planner, "planner by name")
       ->check(CLI::IsMember(planner_names()))->capture_default_str();
   sub->add_option("--compare", opts->compare,

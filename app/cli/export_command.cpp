@@ -1,11 +1,13 @@
 // demoplan-cli export: the export job (time the path within the robot's limits, check it
 // independently, write the program) on a path file, then the program's files to disk.
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/task_inputs.h"
 #include "core/demo/benchmark_scene.h"
 #include "core/error.h"
 #include "core/export/export_job.h"
@@ -16,7 +18,7 @@ namespace demoplan::cli {
 namespace {
 
 struct ExportCommandOptions {
-  std::string path_file, robot, format, out, data_dir;
+  std::string path_file, robot, format, out, data_dir, cell;
   double rate = 0;
   bool json = false, servoj = false, krl_ptp = false;
   int gripper_output = -1, gripper_open_output = -1;
@@ -29,8 +31,12 @@ int run_export(const ExportCommandOptions& o) {
   if (robot != path.robot)
     throw InputError(o.path_file, "robot", "the path is for '" + path.robot + "', --robot says '" + robot + "'");
   // The blends cut the path's corners and are checked against the path's scene.
-  if (path.task.empty()) throw InputError(o.path_file, "task", "is empty: the scene is needed to check the blends");
-  const Scene scene = build_benchmark_scene(load_benchmark_task(o.data_dir, path.task), robot, path.robot_pose);
+  if (path.task.empty() && o.cell.empty())
+    throw InputError(o.path_file, "task", "is empty: the scene is needed to check the blends (a cell's path: give --cell)");
+  const std::shared_ptr<const Scene> scene_ptr =
+      o.cell.empty() ? std::make_shared<const Scene>(build_benchmark_scene(load_benchmark_task(o.data_dir, path.task), robot, path.robot_pose))
+                     : load_cell_scene(o.cell, o.data_dir);
+  const Scene& scene = *scene_ptr;
 
   ExportSettings settings;
   settings.format = o.format;
@@ -42,7 +48,10 @@ int run_export(const ExportCommandOptions& o) {
   settings.gripper_open_output = o.gripper_open_output;
   settings.servoj = o.servoj;
   settings.krl_ptp = o.krl_ptp;
-  settings.base_joints = benchmark_base_joints(o.data_dir, robot);
+  // A bundled mobile robot's base joints; a user's URDF names its own robot.
+  const auto bundled = list_benchmark_robots(o.data_dir);
+  if (std::find(bundled.begin(), bundled.end(), robot) != bundled.end())
+    settings.base_joints = benchmark_base_joints(o.data_dir, robot);
   settings.source = o.path_file;
   settings.file = o.out;
   const ExportReport r = run_export_job(scene, path, settings);
@@ -113,6 +122,7 @@ Command register_export_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("export", "time a planned path within the robot's limits and write it as a robot program");
   sub->add_option("path", o->path_file, "path JSON (demoplan-path)")->required()->check(CLI::ExistingFile);
   sub->add_option("--robot", o->robot, "robot name from robots.json (default: the path's)");
+  sub->add_option("--cell", o->cell, "the cell the path was planned in (docs/cell.md), for a cell's path");
   sub->add_option("--format", o->format, format_choices())->required()->check(CLI::IsMember(program_format_ids()));
   sub->add_option("--out", o->out, "file to write (" + file_name_examples() + "; krl writes NAME.dat beside NAME.src)")
       ->required();

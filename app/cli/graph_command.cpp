@@ -36,7 +36,7 @@ int run_graph(const GraphOptions& o) {
   const double per_second = projection_time > 0 ? total_projected / projection_time : 0.0;
 
   nlohmann::json deviation;
-  if (o.inputs.from == "raw") {
+  if (o.inputs.cell.empty() && o.inputs.demo.empty() && o.inputs.from == "raw") {
     // How far the poses estimated from the video lie from the cleaned ones.
     const Demonstration clean = demonstration_from_benchmark(t.task, t.scene(), PoseSource::Subgoals);
     const PoseDeviation d = pose_deviation(t.demo(), clean);
@@ -49,7 +49,7 @@ int run_graph(const GraphOptions& o) {
               << " mm / " << d.median_rotation_deg << " deg, max " << d.max_translation_mm << " mm / "
               << d.max_rotation_deg << " deg\n";
   }
-  std::cerr << t.scene().name << ", demonstration from " << o.inputs.from << "\n"
+  std::cerr << t.scene().name << ", demonstration from " << (o.inputs.demo.empty() ? o.inputs.from : o.inputs.demo) << "\n"
             << describe_graph_text(t.scene(), graph) << "sampling " << o.samples << " per transition:\n";
   for (size_t i = 0; i < graph.transitions.size(); ++i) {
     std::cerr << "  " << graph.transitions[i].name << ": projected " << stats[i].projected << "/" << o.samples
@@ -75,11 +75,8 @@ int run_graph(const GraphOptions& o) {
       transitions[i]["collision_free_rate"] = static_cast<double>(stats[i].collision_free) / o.samples;
       transitions[i]["failures"] = stats[i].failures;
     }
-    std::cout << nlohmann::json{{"task", o.inputs.task},
-                                {"robot", o.inputs.robot},
-                                {"pose", o.inputs.pose},
-                                {"from", o.inputs.from},
-                                {"placement_states", placements},
+    nlohmann::json j = describe_inputs(o.inputs);
+    j.update(nlohmann::json{{"placement_states", placements},
                                 {"grasp_states", grasps},
                                 {"transitions", transitions},
                                 {"start", d["start"]},
@@ -88,9 +85,8 @@ int run_graph(const GraphOptions& o) {
                                 {"projections_per_second", per_second},
                                 {"collision_free_rate", total ? static_cast<double>(total_free) / total : 0.0},
                                 {"picks", describe_picks(t.scene(), report)},
-                                {"deviation_from_subgoals", deviation}}
-                     .dump()
-              << std::endl;
+                            {"deviation_from_subgoals", deviation}});
+    std::cout << j.dump() << std::endl;
   }
   return every_transition_free ? kOk : kFailed;
 }

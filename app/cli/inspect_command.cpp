@@ -6,10 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
-#include "core/demo/benchmark_scene.h"
-#include "core/demo/benchmark_task.h"
 #include "core/error.h"
-#include "core/project/project.h"
+#include "core/project/project_scene.h"
 #include "perception/camera/camera_model.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/video/video_reader.h"
@@ -25,34 +23,30 @@ struct InspectOptions {
 
 int run_inspect(const InspectOptions& o) {
   const Project p = load_project(o.project);
-  const std::string dir = p.scene.data_dir.empty() ? o.data_dir : p.scene.data_dir;
-  Scene scene;
+  std::shared_ptr<const Scene> loaded;
   try {
-    const BenchmarkTask task = load_benchmark_task(dir, p.scene.task);
-    scene = build_benchmark_scene(task, p.scene.robot, p.scene.pose);
+    loaded = load_referenced_scene(p.scene, o.data_dir).scene;
   } catch (const InputError& e) {
     throw InputError(o.project, "scene", std::string("cannot load the scene it refers to: ") + e.what());
   }
   std::vector<std::string> ids;
-  for (const auto& obj : scene.objects) ids.push_back(obj.id);
+  for (const auto& obj : loaded->objects) ids.push_back(obj.id);
   if (ids != p.demonstration.object_ids)
-    throw InputError(o.project, "demonstration.objects", "do not match the objects of the scene " + p.scene.task);
+    throw InputError(o.project, "demonstration.objects", "do not match the objects of the scene " + p.scene.describe());
   int frames = 0;
   if (!p.video.empty()) frames = perception::VideoReader(p.video).frame_count();
   if (!p.camera.empty()) perception::load_camera(p.camera);
   if (!p.markers.empty()) perception::load_marker_scene(p.markers);
-  std::cerr << o.project << ": " << p.scene.task << ", " << p.scene.robot << " pose " << p.scene.pose << ", "
+  std::cerr << o.project << ": " << p.scene.describe() << ", "
             << p.demonstration.events.size() << " events" << (p.video.empty() ? "" : ", video of ")
             << (p.video.empty() ? "" : std::to_string(frames) + " frames") << "\n";
-  if (o.json)
-    std::cout << nlohmann::json{{"project", o.project},
-                                {"task", p.scene.task},
-                                {"robot", p.scene.robot},
-                                {"pose", p.scene.pose},
-                                {"events", p.demonstration.events.size()},
-                                {"video_frames", frames}}
-                     .dump()
-              << std::endl;
+  if (o.json) {
+    nlohmann::json j = p.scene.is_cell()
+                           ? nlohmann::json{{"cell", p.scene.cell}}
+                           : nlohmann::json{{"task", p.scene.task}, {"robot", p.scene.robot}, {"pose", p.scene.pose}};
+    j.update(nlohmann::json{{"project", o.project}, {"events", p.demonstration.events.size()}, {"video_frames", frames}});
+    std::cout << j.dump() << std::endl;
+  }
   return kOk;
 }
 

@@ -1,8 +1,9 @@
-// demoplan-cli new: a project file from a benchmark task, with its video, camera and marker
+// demoplan-cli new: a project file from a benchmark task or a cell, with its video, camera and marker
 // scene checked and stored, ready to open in the desktop application.
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -18,7 +19,7 @@ namespace demoplan::cli {
 namespace {
 
 struct NewOptions {
-  std::string spec, out, video, camera, markers, data_dir;
+  std::string spec, cell, demo, out, video, camera, markers, data_dir;
   bool json = false;
 };
 
@@ -46,8 +47,12 @@ std::string absolute(const std::string& file) {
 }
 
 int run_new(const NewOptions& o) {
-  const SceneReference ref = parse_spec(o.spec);
-  NewProject made = new_benchmark_project(o.data_dir, ref);
+  if (o.spec.empty() == o.cell.empty()) throw InputError("command line", "scene", "give TASK:ROBOT:POSE or --cell");
+  std::optional<Demonstration> demo;
+  if (!o.demo.empty()) demo = load_demonstration(o.demo);
+  NewProject made = o.cell.empty() ? new_benchmark_project(o.data_dir, parse_spec(o.spec))
+                                   : new_cell_project(o.data_dir, o.cell, demo ? &*demo : nullptr);
+  const SceneReference& ref = made.project.scene;
   Project& p = made.project;
   // Checked here as the desktop application would check them, so the project opens cleanly.
   if (!o.video.empty()) perception::VideoReader check(o.video);
@@ -59,17 +64,13 @@ int run_new(const NewOptions& o) {
   p.markers = absolute(o.markers);
   save_project(o.out, p);
   for (const auto& note : made.deck.notes()) std::cerr << "on the robot's deck: " << note << "\n";
-  std::cerr << "wrote " << o.out << " (" << ref.task << ", " << ref.robot << " pose " << ref.pose << ", "
-            << p.demonstration.events.size() << " events)\n";
-  if (o.json)
-    std::cout << nlohmann::json{{"project", o.out},
-                                {"task", ref.task},
-                                {"robot", ref.robot},
-                                {"pose", ref.pose},
-                                {"events", p.demonstration.events.size()},
-                                {"deck_notes", made.deck.notes()}}
-                     .dump()
-              << std::endl;
+  std::cerr << "wrote " << o.out << " (" << ref.describe() << ", " << p.demonstration.events.size() << " events)\n";
+  if (o.json) {
+    nlohmann::json j = ref.is_cell() ? nlohmann::json{{"cell", ref.cell}}
+                                     : nlohmann::json{{"task", ref.task}, {"robot", ref.robot}, {"pose", ref.pose}};
+    j.update(nlohmann::json{{"project", o.out}, {"events", p.demonstration.events.size()}, {"deck_notes", made.deck.notes()}});
+    std::cout << j.dump() << std::endl;
+  }
   return kOk;
 }
 
@@ -77,8 +78,11 @@ int run_new(const NewOptions& o) {
 
 Command register_new_command(CLI::App& app) {
   auto o = std::make_shared<NewOptions>();
-  CLI::App* sub = app.add_subcommand("new", "create a project file from a benchmark task");
-  sub->add_option("scene", o->spec, "TASK:ROBOT:POSE, e.g. shelf_1:panda:1")->required();
+  CLI::App* sub = app.add_subcommand("new", "create a project file from a benchmark task or a cell");
+  auto* spec = sub->add_option("scene", o->spec, "TASK:ROBOT:POSE, e.g. shelf_1:panda:1");
+  sub->add_option("--cell", o->cell, "a cell file (docs/cell.md) in place of TASK:ROBOT:POSE")->excludes(spec);
+  sub->add_option("--demo", o->demo, "with --cell: the demonstration to start from (default: none yet)")
+      ->needs("--cell")->check(CLI::ExistingFile);
   sub->add_option("--out", o->out, "project file to write (.demoplan)")->required();
   sub->add_option("--video", o->video, "video of the demonstration")->check(CLI::ExistingFile);
   sub->add_option("--camera", o->camera, "camera calibration (demoplan-camera or OpenCV)")->check(CLI::ExistingFile);

@@ -34,12 +34,12 @@ int run_plan(const PlanOptions& o) {
   const PlanReport s = run_plan_job(problem, settings, {}, nullptr, {.validate_planner_path = false});
   const PlanResult& r = s.plan;
   const std::uint64_t seed = settings.planner.seed;
-  nlohmann::json j{{"task", o.inputs.task},  {"robot", o.inputs.robot},    {"pose", o.inputs.pose},
-                   {"planner", s.planner},
-                   {"seed", seed},            {"from", o.inputs.from},      {"solved", r.solved},
+  nlohmann::json j = describe_inputs(o.inputs);
+  j.update(nlohmann::json{{"planner", s.planner},
+                   {"seed", seed},            {"solved", r.solved},
                    {"planning_time_s", r.planning_time_s}, {"iterations", r.iterations},
                    {"trees", r.trees},        {"nodes", r.nodes},
-                   {"rejected_links", r.rejected_links}};
+                   {"rejected_links", r.rejected_links}});
   std::cerr << t.scene().name << ", " << s.planner << ", seed " << seed << ": "
             << (r.solved ? "solved" : "not solved: " + r.message) << " in " << r.planning_time_s << " s, "
             << r.iterations << " iterations, " << r.trees << " trees, " << r.nodes << " nodes\n";
@@ -66,9 +66,11 @@ int run_plan(const PlanOptions& o) {
     return kFailed;
   }
   Path path = s.path;
-  path.task = o.inputs.task;
-  path.robot = o.inputs.robot;
-  path.robot_pose = o.inputs.pose;
+  path.robot = t.scene().robot.name;
+  if (o.inputs.cell.empty()) {  // a cell's path is judged with the cell and demonstration given again
+    path.task = o.inputs.task;
+    path.robot_pose = o.inputs.pose;
+  }
   if (settings.shortcut) {
     std::cerr << "  shortcut: " << s.shortcut.length_before << " -> " << s.shortcut.length_after << " rad in "
               << s.shortcut.time_s << " s (" << s.shortcut.accepted << " of " << s.shortcut.attempts << " cuts, "
@@ -121,7 +123,7 @@ void add_planner_options(CLI::App& sub, PlannerSettings& s) {
 
 Command register_plan_command(CLI::App& app) {
   auto opts = std::make_shared<PlanOptions>();
-  CLI::App* sub = app.add_subcommand("plan", "plan a benchmark task (default: the video-guided planner)");
+  CLI::App* sub = app.add_subcommand("plan", "plan a benchmark task or a cell's demonstration (default: the video-guided planner)");
   add_task_inputs(*sub, opts->inputs);
   add_planner_options(*sub, opts->settings);
   sub->add_flag("--no-shortcut", opts->no_shortcut, "keep the planner's path as found");

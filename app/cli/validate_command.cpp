@@ -21,15 +21,22 @@ struct ValidateOptions {
 
 int run_validate(const ValidateOptions& o) {
   const Path path = load_path(o.path_file);
-  const BenchmarkTask task = load_benchmark_task(o.inputs.data_dir, o.inputs.task);
-  const Scene scene = build_benchmark_scene(task, o.inputs.robot, o.inputs.pose);
+  // A benchmark task's path is judged against the task's own start and goal; a cell's (or a
+  // given demonstration's) against the demonstration's.
+  const bool by_demo = !o.inputs.cell.empty() || !o.inputs.demo.empty();
+  const LoadedTask t = by_demo ? load_task_inputs(o.inputs) : LoadedTask{load_benchmark_task(o.inputs.data_dir, o.inputs.task), {}};
+  const std::shared_ptr<const Scene> scene_ptr =
+      by_demo ? t.instance.problem.scene : std::make_shared<const Scene>(build_benchmark_scene(t.task, o.inputs.robot, o.inputs.pose));
+  const Scene& scene = *scene_ptr;
+  const std::string what = by_demo ? (o.inputs.cell.empty() ? o.inputs.demo : o.inputs.cell) : o.inputs.task;
   if (path.joint_names.size() != static_cast<size_t>(scene.robot.model.nq))
     throw InputError(o.path_file, "joint_names", "has " + std::to_string(path.joint_names.size()) + " joints, " +
-                                                     o.inputs.robot + " has " + std::to_string(scene.robot.model.nq));
+                                                     scene.robot.name + " has " + std::to_string(scene.robot.model.nq));
   for (size_t i = 0; i < scene.objects.size() && i < path.object_ids.size(); ++i)
     if (path.object_ids[i] != scene.objects[i].id || path.object_ids.size() != scene.objects.size())
-      throw InputError(o.path_file, "object_ids", "do not match the objects of " + o.inputs.task);
-  const ValidationReport v = validate_path(scene, validation_task(task, scene), path);
+      throw InputError(o.path_file, "object_ids", "do not match the objects of " + what);
+  const ValidationReport v =
+      validate_path(scene, by_demo ? t.instance.problem.validation : validation_task(t.task, scene), path);
   std::cerr << o.path_file << " on " << scene.name << ": " << (v.valid ? "valid" : "INVALID: " + v.message)
             << "\n  length: robot " << v.length.robot << " rad, objects " << v.length.object_translation << " m / "
             << v.length.object_rotation << " rad; " << v.grasps << " grasps; " << v.samples << " samples\n";

@@ -11,6 +11,14 @@ Eigen::Matrix3d rotation_from_rpy(double roll, double pitch, double yaw) {
       .toRotationMatrix();
 }
 
+Eigen::Vector3d rpy_from_rotation(const Eigen::Matrix3d& R) {
+  const double c = std::hypot(R(0, 0), R(1, 0));  // |cos(pitch)|; atan2 keeps pitch exact near +-pi/2
+  const double pitch = std::atan2(-R(2, 0), c);
+  if (c < 1e-10)  // gimbal lock: only roll - yaw (or roll + yaw) is defined
+    return {0.0, pitch, std::atan2(-R(0, 1), R(1, 1))};
+  return {std::atan2(R(2, 1), R(2, 2)), pitch, std::atan2(R(1, 0), R(0, 0))};
+}
+
 Pose pose_from_xyz_rpy(const Eigen::Vector3d& xyz, const Eigen::Vector3d& rpy) {
   Pose T = Pose::Identity();
   T.linear() = rotation_from_rpy(rpy.x(), rpy.y(), rpy.z());

@@ -10,6 +10,8 @@ using Vector6d = Eigen::Matrix<double, 6, 1>;
 // URDF rpy: R = Rz(yaw) * Ry(pitch) * Rx(roll).
 Eigen::Matrix3d rotation_from_rpy(double roll, double pitch, double yaw);
 Pose pose_from_xyz_rpy(const Eigen::Vector3d& xyz, const Eigen::Vector3d& rpy);
+// The inverse: (roll, pitch, yaw) with pitch in [-pi/2, pi/2]; at pitch = +-pi/2 roll is 0.
+Eigen::Vector3d rpy_from_rotation(const Eigen::Matrix3d& R);
 
 // Translation plus a quaternion; the quaternion is normalised.
 Pose pose_from_xyz_quat(const Eigen::Vector3d& xyz, const Eigen::Quaterniond& q);

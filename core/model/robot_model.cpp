@@ -82,6 +82,17 @@ std::vector<int> RobotModel::rigid_bodies() const {
   return body;
 }
 
+std::vector<int> RobotModel::subtree_links(int link) const {
+  std::vector<int> out, stack{link};
+  while (!stack.empty()) {
+    const int l = stack.back();
+    stack.pop_back();
+    out.push_back(l);
+    for (int j : links[l].child_joints) stack.push_back(joints[j].child_link);
+  }
+  return out;
+}
+
 namespace {
 
 // urdfdom reports parse errors through console_bridge; keep the last one for our message.

@@ -92,6 +92,8 @@ struct RobotModel {
   // Links rigidly connected through fixed joints share a body; bodies[i] is link i's body id,
   // the id of the topmost link of the rigid group.
   std::vector<int> rigid_bodies() const;
+  // `link` and every link below it (a gripper's hand, fingers and what is mounted on them).
+  std::vector<int> subtree_links(int link) const;
 };
 
 struct UrdfOptions {

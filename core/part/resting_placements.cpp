@@ -6,6 +6,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "core/geometry/polygon_2d.h"
+
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
 }
@@ -62,7 +64,6 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> plane_axes(const Eigen::Vector3d& n)
   return {u, n.cross(u)};
 }
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Distance from p to the segment [a, b].
 double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
@@ -94,38 +95,19 @@ Eigen::Vector3d centre_of_mass(const TriangleMesh& mesh, double scale) {
   return area > 0 ? Eigen::Vector3d(surface / area) : Eigen::Vector3d(box.center().cast<double>() * scale);
 }
 
-// The convex hull of 2D points, counter-clockwise (Andrew's monotone chain).
-std::vector<int> hull_2d(const std::vector<Eigen::Vector2d>& p) {
-  std::vector<int> idx(p.size());
-  for (size_t i = 0; i < p.size(); ++i) idx[i] = static_cast<int>(i);
-  std::sort(idx.begin(), idx.end(), [&](int a, int b) { return p[a].x() < p[b].x() || (p[a].x() == p[b].x() && p[a].y() < p[b].y()); });
-  std::vector<int> h(2 * idx.size() + 1);
-  size_t k = 0;
-  for (int pass = 0; pass < 2; ++pass) {
-    const size_t start = k;
-    for (size_t j = 0; j < idx.size(); ++j) {
-      const int i = pass == 0 ? idx[j] : idx[idx.size() - 1 - j];
-      while (k >= start + 2 && cross2(p[h[k - 1]] - p[h[k - 2]], p[i] - p[h[k - 2]]) <= 0) --k;
-      h[k++] = i;
-    }
-    --k;  // the last point is the first of the other chain
-  }
-  h.resize(k);
-  return h;
-}
-
 std::vector<RestingPlacement> resting_placements(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& com,
                                                  const RestingPlacementOptions& o) {
   const std::vector<HullFacet> facets = hull_facets(points, o);
-  std::vector<Eigen::Vector3d> hull_points;
-  for (const HullFacet& f : facets) hull_points.insert(hull_points.end(), f.vertices.begin(), f.vertices.end());
   std::vector<RestingPlacement> out;
-  for (const HullFacet& f : facets) {
+  for (HullFacet f : facets) {
+    // A merged facet's plane may cut through the points it merged (by up to the merge distance):
+    // the part rests on the parallel plane through its outermost point.
+    for (const auto& p : points) f.offset = std::max(f.offset, f.normal.dot(p));
     // A real face is not flat to the micrometre (a scan, a warped box): the part touches the
     // surface with every hull point within the contact tolerance of the facet's plane.
     const auto [u, v] = plane_axes(f.normal);
     std::vector<Eigen::Vector3d> touching;
-    for (const auto& p : hull_points)
+    for (const auto& p : points)
       if (f.offset - f.normal.dot(p) <= o.contact_tolerance) touching.push_back(p);
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     for (const auto& p : touching) centroid += p;
@@ -141,8 +123,7 @@ std::vector<RestingPlacement> resting_placements(const std::vector<Eigen::Vector
       poly2.push_back(flat[i]);
       poly.push_back(centroid + flat[i].x() * u + flat[i].y() * v);
     }
-    double area = 0.0;
-    for (size_t i = 0; i < poly2.size(); ++i) area += 0.5 * cross2(poly2[i], poly2[(i + 1) % poly2.size()]);
+    const double area = polygon_area(poly2);
     if (area < o.min_area) continue;
     // The centre of mass projected onto the face: inside it by `margin`, or the part tips over.
     const double height = f.offset - f.normal.dot(com);

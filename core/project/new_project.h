@@ -19,4 +19,11 @@ struct NewProject {
 NewProject new_benchmark_project(const std::string& data_dir, const SceneReference& scene,
                                  const StopCondition& stop = {}, const DeckPlacementProgress& progress = {});
 
+// A new project on a cell file: its scene built (every file it names checked, handles generated),
+// with `demonstration` when given (its objects must be the cell's parts), else one with the
+// cell's parts and no event yet, for the operator to extract from a video or to edit.
+NewProject new_cell_project(const std::string& data_dir, const std::string& cell_file,
+                            const Demonstration* demonstration = nullptr, const StopCondition& stop = {},
+                            const DeckPlacementProgress& progress = {});
+
 }  // namespace demoplan

@@ -5,30 +5,13 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/io/stored_path.h"
 
 namespace demoplan {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path folder_of(const std::string& file) { return fs::absolute(fs::path(file)).parent_path(); }
-
-// Relative to the project's folder when both are on the same root; absolute otherwise.
-std::string to_stored(const std::string& absolute, const std::string& file) {
-  if (absolute.empty()) return "";
-  const fs::path p = fs::path(absolute).lexically_normal();
-  const fs::path rel = p.lexically_relative(folder_of(file).lexically_normal());
-  if (rel.empty()) return p.string();
-  return rel.generic_string();
-}
-
-std::string from_stored(const std::string& stored, const std::string& file) {
-  if (stored.empty()) return "";
-  const fs::path p(stored);
-  if (p.is_absolute()) return p.lexically_normal().string();
-  return (folder_of(file) / p).lexically_normal().string();
-}
 
 Json result_to_json(const ResultSummary& r, const std::string& file) {
   return Json{{"path", to_stored(r.path, file)},
@@ -101,8 +84,14 @@ ResultSummary summarize(const PlanReport& report, const std::string& validated_a
   return s;
 }
 
+std::string SceneReference::describe() const {
+  if (is_cell()) return fs::path(cell).filename().string();
+  return task + ", " + robot + " pose " + std::to_string(pose);
+}
+
 Json project_to_json(const Project& p, const std::string& file) {
-  Json scene{{"task", p.scene.task}, {"robot", p.scene.robot}, {"pose", p.scene.pose}};
+  Json scene = p.scene.is_cell() ? Json{{"cell", to_stored(p.scene.cell, file)}}
+                                 : Json{{"task", p.scene.task}, {"robot", p.scene.robot}, {"pose", p.scene.pose}};
   if (!p.scene.data_dir.empty()) scene["data_dir"] = to_stored(p.scene.data_dir, file);
   Json j{{"format", kProjectFormat},
          {"version", kProjectVersion},
@@ -123,10 +112,15 @@ Project project_from_json(const Json& json, const std::string& file) {
   check_format(root, kProjectFormat, kProjectVersion, "project");
   Project p;
   const JsonField scene = root["scene"];
-  p.scene.task = scene["task"].string();
-  p.scene.robot = scene["robot"].string();
-  p.scene.pose = scene["pose"].integer();
-  if (p.scene.pose < 0) scene["pose"].fail("must be >= 0");
+  if (scene.has("cell")) {
+    p.scene.cell = from_stored(scene["cell"].string(), file);
+    if (p.scene.cell.empty()) scene["cell"].fail("must name a cell file");
+  } else {
+    p.scene.task = scene["task"].string();
+    p.scene.robot = scene["robot"].string();
+    p.scene.pose = scene["pose"].integer();
+    if (p.scene.pose < 0) scene["pose"].fail("must be >= 0");
+  }
   if (scene.has("data_dir")) p.scene.data_dir = from_stored(scene["data_dir"].string(), file);
   p.video = root.has("video") ? from_stored(root["video"].string(), file) : "";
   p.camera = root.has("camera") ? from_stored(root["camera"].string(), file) : "";

@@ -4,6 +4,7 @@
 // {"format": "demoplan-project", "version": 1,
 //  "scene": {"task": "shelf_1", "robot": "panda", "pose": 1,
 //            "data_dir": "..."},               // optional; absent: the bundled benchmark data
+//      or  {"cell": "my.cell.json"},           // a cell the user built (docs/cell.md)
 //  "video": "video.mp4",                       // relative to the project file; "" when none
 //  "camera": "camera.json",                    // demoplan-camera or OpenCV calibration; "" none
 //  "markers": "markers.json",                  // demoplan-marker-scene: which markers are on which
@@ -33,6 +34,9 @@ struct SceneReference {
   std::string task = "shelf_1";
   std::string robot = "panda";
   int pose = 0;
+  std::string cell;  // absolute; when set, the scene is this cell file (docs/cell.md), not a task
+  bool is_cell() const { return !cell.empty(); }
+  std::string describe() const;  // "shelf_1, panda pose 0" or the cell file's name
   bool operator==(const SceneReference&) const = default;
 };
 

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/scene/bvh_cache.h"
+#include "core/scene/fcl_object.h"
 #include "core/scene/geometry_bounds.h"
 
 namespace demoplan {
@@ -17,15 +18,8 @@ namespace demoplan {
 using fcl::CollisionObjectd;
 
 void AllowedContacts::allow_gripper(const Scene& scene, int object) {
-  const auto& model = scene.robot.model;
-  // The gripper link and all links below it: hand, fingers, anything mounted on them.
-  std::vector<int> stack{scene.robot.gripper_link};
-  while (!stack.empty()) {
-    const int l = stack.back();
-    stack.pop_back();
-    allow_object_link(object, l);
-    for (int j : model.links[l].child_joints) stack.push_back(model.joints[j].child_link);
-  }
+  // The hand, the fingers and anything mounted on them.
+  for (int l : scene.robot.model.subtree_links(scene.robot.gripper_link)) allow_object_link(object, l);
 }
 
 bool AllowedContacts::allows_object_link(int object, int link) const {
@@ -69,17 +63,15 @@ struct Prototype {
 // An object at the identity to copy (see bvh_cache.h), and its bounds. Meshes come fitted from
 // the process-wide cache with their spheres; primitives are cheap and belong to this checker.
 Prototype make_prototype(const Geometry& g) {
-  auto own = [](std::shared_ptr<fcl::CollisionGeometryd> geometry) {
-    return std::make_shared<const CollisionObjectd>(std::move(geometry));
-  };
-  if (auto* b = std::get_if<BoxShape>(&g.shape)) return {own(std::make_shared<fcl::Boxd>(b->size)), box_bound(b->size)};
-  if (auto* c = std::get_if<CylinderShape>(&g.shape))
-    return {own(std::make_shared<fcl::Cylinderd>(c->radius, c->length)), cylinder_bound(c->radius, c->length)};
-  if (auto* s = std::get_if<SphereShape>(&g.shape))
-    return {own(std::make_shared<fcl::Sphered>(s->radius)), sphere_bound(s->radius)};
-  const auto& m = std::get<MeshShape>(g.shape);
-  SharedMesh shared = shared_mesh(*m.mesh, m.scale);
-  return {std::move(shared.bvh), mesh_bound(std::move(shared.spheres))};
+  if (const auto* m = std::get_if<MeshShape>(&g.shape)) {
+    SharedMesh shared = shared_mesh(*m->mesh, m->scale);
+    return {std::move(shared.bvh), mesh_bound(std::move(shared.spheres))};
+  }
+  GeometryBound bound;
+  if (auto* b = std::get_if<BoxShape>(&g.shape)) bound = box_bound(b->size);
+  else if (auto* c = std::get_if<CylinderShape>(&g.shape)) bound = cylinder_bound(c->radius, c->length);
+  else bound = sphere_bound(std::get<SphereShape>(g.shape).radius);
+  return {fcl_object(g), bound};
 }
 
 }  // namespace collision_detail

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tests/app/cli_runner.h"
+#include "tests/app/cli_suite.h"
 #include "tests/support/data_2024.h"
 
 namespace {
@@ -26,17 +26,8 @@ std::string run_shell(const std::string& command) {
   return nl == std::string::npos ? out : out.substr(0, nl);
 }
 
-class CliPlanning : public ::testing::Test {
+class CliPlanning : public CliSuite {
 protected:
-  static void SetUpTestSuite() { dir_ = make_temp_dir("demoplan_test_cli_planning_"); }
-  static void TearDownTestSuite() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  static CliResult run(std::vector<std::string> args) {
-    args.insert(args.end(), {"--data-dir", DEMOPLAN_DATA_DIR});
-    return run_cli(args, dir_);
-  }
   static Json one_object(const CliResult& r) {
     EXPECT_EQ(lines(r.out).size(), 1u) << r.out;
     return Json::parse(r.out);
@@ -52,7 +43,6 @@ protected:
     }();
     return file;
   }
-  static inline fs::path dir_;
 };
 
 TEST_F(CliPlanning, PlanPrintsTheIssuesKeysAndAValidPath) {

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tests/app/cli_runner.h"
+#include "tests/app/cli_suite.h"
 
 namespace {
 
@@ -12,19 +12,7 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using namespace demoplan::testing_support;
 
-class CliTracks : public ::testing::Test {
-protected:
-  static void SetUpTestSuite() { dir_ = make_temp_dir("demoplan_test_cli_tracks_"); }
-  static void TearDownTestSuite() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  static CliResult run(std::vector<std::string> args) {
-    args.insert(args.end(), {"--data-dir", DEMOPLAN_DATA_DIR});
-    return run_cli(args, dir_);
-  }
-  static inline fs::path dir_;
-};
+class CliTracks : public CliSuite {};
 
 TEST_F(CliTracks, EvaluateTracksFindsTheLabelledPicksOfShelf1) {
   const CliResult r = run({"evaluate-tracks", "--task", "shelf_1", "--json"});

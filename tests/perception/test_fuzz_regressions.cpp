@@ -21,6 +21,7 @@
 #include "core/model/robot_model.h"
 #include "core/model/srdf.h"
 #include "core/path/path.h"
+#include "core/cell/cell.h"
 #include "core/project/project.h"
 #include "perception/camera/camera_model.h"
 #include "perception/extraction/tracks_file.h"
@@ -97,6 +98,12 @@ protected:
 TEST_F(FuzzRegressions, Project) {
   EXPECT_GT(expect_each_input_loads_or_fails_cleanly("project", scratch.dir / "input.demoplan",
                                                      [](const std::string& f) { load_project(f); }),
+            0u);
+}
+
+TEST_F(FuzzRegressions, Cell) {
+  EXPECT_GT(expect_each_input_loads_or_fails_cleanly("cell", scratch.dir / "input.cell.json",
+                                                     [](const std::string& f) { load_cell(f); }),
             0u);
 }
 
@@ -186,7 +193,7 @@ TEST_F(FuzzRegressions, Tracks) {
 
 // Every fuzz target has a test above: a new tests/fuzz/fuzz_<target>.cpp needs one here too.
 TEST(FuzzRegressionsCoverage, EveryFuzzTargetIsReplayed) {
-  const std::vector<std::string> replayed{"project", "demonstration", "path",         "urdf",    "srdf",
+  const std::vector<std::string> replayed{"project", "cell", "demonstration", "path",         "urdf",    "srdf",
                                           "task",    "camera",        "camera_yaml",  "camera_xml", "marker_scene",
                                           "bop_csv", "hand_detections", "tracks"};
   for (const auto& e : fs::directory_iterator(kSource / "tests/fuzz")) {

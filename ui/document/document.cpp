@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/project/new_project.h"
+#include "core/project/project_scene.h"
 #include "perception/camera/camera_model.h"
 #include "perception/video/video_reader.h"
 #include "ui/document/demo_poses.h"
@@ -84,13 +85,12 @@ Document::~Document() = default;
 
 void Document::loadScene(const SceneReference& ref, std::shared_ptr<const Scene>& scene,
                          std::shared_ptr<const BenchmarkTask>& task) const {
-  const std::string dir = ref.data_dir.empty() ? data_dir_ : ref.data_dir;
-  auto t = std::make_shared<BenchmarkTask>(load_benchmark_task(dir, ref.task));
   SceneLoadOptions options;
   options.load_visual_meshes = true;
   options.mesh_cache = mesh_cache_.get();
-  scene = std::make_shared<const Scene>(build_benchmark_scene(*t, ref.robot, ref.pose, options));
-  task = std::move(t);
+  ReferencedScene loaded = load_referenced_scene(ref, data_dir_, options);
+  scene = std::move(loaded.scene);
+  task = std::move(loaded.task);
 }
 
 std::vector<std::string> Document::newFromBenchmark(const std::string& task_name, const std::string& robot, int pose) {
@@ -104,6 +104,14 @@ std::vector<std::string> Document::newFromBenchmark(const std::string& task_name
   loadScene(made.project.scene, scene, task);
   install(std::move(made.project), std::move(scene), std::move(task), QString());
   return made.deck.notes();
+}
+
+void Document::newFromCell(const std::string& cell_file) {
+  NewProject made = new_cell_project(data_dir_, cell_file);
+  std::shared_ptr<const Scene> scene;
+  std::shared_ptr<const BenchmarkTask> task;
+  loadScene(made.project.scene, scene, task);
+  install(std::move(made.project), std::move(scene), std::move(task), QString());
 }
 
 void Document::open(const QString& file) {
@@ -125,7 +133,7 @@ void Document::open(const QString& file) {
       return "[" + s + "]";
     };
     throw InputError(path, "demonstration.objects",
-                     "lists " + join(p.demonstration.object_ids) + " but the scene " + p.scene.task + " has " +
+                     "lists " + join(p.demonstration.object_ids) + " but the scene " + p.scene.describe() + " has " +
                          join(ids) + " (in this order)");
   }
   install(std::move(p), std::move(scene), std::move(task), QString::fromStdString(path));
@@ -213,7 +221,7 @@ void Document::saveCopy(const QString& file) const {
 
 QString Document::displayName() const {
   if (!hasProject()) return tr("No project");
-  if (file_.isEmpty()) return tr("Untitled (%1)").arg(q(scene_ref_.task));
+  if (file_.isEmpty()) return tr("Untitled (%1)").arg(q(scene_ref_.is_cell() ? scene_->name : scene_ref_.task));
   return QFileInfo(file_).fileName();
 }
 

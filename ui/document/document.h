@@ -40,6 +40,8 @@ public:
   // ---- files (throw InputError naming file and field; the document is unchanged on error)
   // Returns one line per object riding on the robot's deck (waiter): where it rides and why.
   std::vector<std::string> newFromBenchmark(const std::string& task, const std::string& robot, int pose);
+  // A new project on a cell file (docs/cell.md): its parts, no event yet. Throws InputError.
+  void newFromCell(const std::string& cell_file);
   void open(const QString& file);
   void save();                        // to filePath(); throws when it is empty or a template
   void saveAs(const QString& file);
@@ -62,7 +64,8 @@ public:
   const std::string& dataDir() const { return data_dir_; }
   const Scene& scene() const { return *scene_; }
   std::shared_ptr<const Scene> sharedScene() const { return scene_; }
-  const BenchmarkTask& task() const { return *task_; }
+  // The benchmark task the scene comes from; null for a cell.
+  const BenchmarkTask* task() const { return task_.get(); }
   const SceneReference& sceneReference() const { return scene_ref_; }
 
   // ---- demonstration and edits (every edit goes through the undo stack)

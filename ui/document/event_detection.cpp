@@ -26,7 +26,7 @@ bool EventDetection::start() {
   job.camera = doc_->media()->cameraFile();
   job.markers = doc_->media()->markersFile();
   for (const auto& o : doc_->scene().objects) job.object_ids.push_back(o.id);
-  job.task = doc_->sceneReference().task;
+  job.task = doc_->sceneReference().is_cell() ? doc_->scene().name : doc_->sceneReference().task;
   return runner_.start(std::move(job));
 }
 

@@ -24,9 +24,11 @@ bool PlanningController::start() {
   job.scene = doc_->sharedScene();
   job.demonstration = doc_->demonstration();
   job.settings = settings_;
-  job.task = doc_->sceneReference().task;
-  job.robot = doc_->sceneReference().robot;
-  job.robot_pose = doc_->sceneReference().pose;
+  if (!doc_->sceneReference().is_cell()) {  // a path on a cell names no benchmark task
+    job.task = doc_->sceneReference().task;
+    job.robot = doc_->sceneReference().robot;
+    job.robot_pose = doc_->sceneReference().pose;
+  }
   return runner_.start(std::move(job));
 }
 

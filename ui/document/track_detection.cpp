@@ -12,9 +12,10 @@ TrackDetection::TrackDetection(Document* doc) : QObject(doc), doc_(doc) {
 
 QString TrackDetection::blocker() const {
   if (!doc_->hasProject()) return tr("Open a project first");
-  const BenchmarkTask& task = doc_->task();
-  if (task.frames <= 0 || task.raw_poses.empty())
-    return tr("The benchmark task %1 has no pose tracks (objects_poses)").arg(QString::fromStdString(task.file));
+  const BenchmarkTask* task = doc_->task();
+  if (!task) return tr("Pose tracks come with benchmark tasks; this project's scene is a cell");
+  if (task->frames <= 0 || task->raw_poses.empty())
+    return tr("The benchmark task %1 has no pose tracks (objects_poses)").arg(QString::fromStdString(task->file));
   return {};
 }
 
@@ -22,7 +23,7 @@ int TrackDetection::detect() {
   const QString why = blocker();
   if (!why.isEmpty()) throw std::runtime_error(why.toStdString());
   auto result = std::make_shared<perception::TracksDemonstration>(
-      perception::demonstration_from_tracks(doc_->task(), doc_->scene()));
+      perception::demonstration_from_tracks(*doc_->task(), doc_->scene()));
   const int events = static_cast<int>(result->demonstration.events.size());
   const int doubts = static_cast<int>(result->demonstration.doubts.size());
   QString text = tr("Detect events from tracks (%1 events").arg(events);
@@ -39,7 +40,7 @@ std::shared_ptr<const perception::TracksDemonstration> TrackDetection::tracks() 
   // The panel only needs the segmentation; the demonstration stays the document's.
   try {
     auto t = std::make_shared<perception::TracksDemonstration>();
-    t->tracks = perception::tracks_from_benchmark(doc_->task());
+    t->tracks = perception::tracks_from_benchmark(*doc_->task());
     t->segmentation = perception::segment_tracks(t->tracks);
     tracks_ = std::move(t);
   } catch (const std::exception& e) {

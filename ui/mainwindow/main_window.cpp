@@ -1,5 +1,7 @@
 #include "ui/mainwindow/main_window.h"
 
+#include <filesystem>
+
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
@@ -193,6 +195,14 @@ void MainWindow::createActions() {
   auto* new_action = file->addAction(tr("&New from Benchmark Task…"), this, &MainWindow::newFromBenchmarkDialog);
   new_action->setShortcut(QKeySequence::New);
   new_action->setStatusTip(tr("Start a project from a task of the bundled benchmark (scene and labelled events)"));
+  auto* new_cell = file->addAction(tr("New from &Cell…"), this, [this] {
+    if (!maybeSave()) return;
+    const QString dir = QString::fromStdString((std::filesystem::path(options_.data_dir) / ".." / "cells").lexically_normal().string());
+    const QString f = QFileDialog::getOpenFileName(this, tr("New project on a cell"), dir, tr("Cell files (*.json)"));
+    if (!f.isEmpty()) newFromCell(f);
+  });
+  new_cell->setShortcut(QKeySequence(tr("Ctrl+Shift+N")));
+  new_cell->setStatusTip(tr("Start a project on your own cell: robot, furniture and parts from files (docs/cell.md)"));
   auto* open = file->addAction(st->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open…"), this, [this] {
     if (!maybeSave()) return;
     QSettings settings;
@@ -505,18 +515,11 @@ bool MainWindow::openSample() {
                                      .arg(options_.sample_project));
     return false;
   }
-  QApplication::setOverrideCursor(Qt::WaitCursor);
-  try {
-    removeAutosave();
-    doc_->open(options_.sample_project);
-    doc_->setTemplate(true);
-  } catch (const std::exception& e) {
-    QApplication::restoreOverrideCursor();
-    reportError(tr("Cannot open the sample"), QString::fromUtf8(e.what()));
+  if (!replaceProject(tr("Cannot open the sample"), [this] {
+        doc_->open(options_.sample_project);
+        doc_->setTemplate(true);
+      }))
     return false;
-  }
-  QApplication::restoreOverrideCursor();
-  updateTitle();
   updateStatus();
   statusBar()->showMessage(tr("The sample project: a person moves two parts on a shelf, for a Panda. Scrub the "
                               "video, check the events and poses, press Plan (F5)."),
@@ -524,19 +527,26 @@ bool MainWindow::openSample() {
   return true;
 }
 
-bool MainWindow::newFromBenchmark(const QString& task, const QString& robot, int pose) {
+bool MainWindow::replaceProject(const QString& failure_title, const std::function<void()>& make) {
   QApplication::setOverrideCursor(Qt::WaitCursor);
-  std::vector<std::string> deck_notes;
   try {
     removeAutosave();
-    deck_notes = doc_->newFromBenchmark(task.toStdString(), robot.toStdString(), pose);
+    make();
   } catch (const std::exception& e) {
     QApplication::restoreOverrideCursor();
-    reportError(tr("Cannot create the project"), QString::fromUtf8(e.what()));
+    reportError(failure_title, QString::fromUtf8(e.what()));
     return false;
   }
   QApplication::restoreOverrideCursor();
   updateTitle();
+  return true;
+}
+
+bool MainWindow::newFromBenchmark(const QString& task, const QString& robot, int pose) {
+  std::vector<std::string> deck_notes;
+  if (!replaceProject(tr("Cannot create the project"),
+                      [&] { deck_notes = doc_->newFromBenchmark(task.toStdString(), robot.toStdString(), pose); }))
+    return false;
   // Objects riding on the robot's deck may have been moved from where the demonstrator put
   // them so the arm can pick them: say so, since the 3D view shows them there.
   if (!deck_notes.empty()) {
@@ -544,6 +554,16 @@ bool MainWindow::newFromBenchmark(const QString& task, const QString& robot, int
     for (const auto& n : deck_notes) lines << QString::fromStdString(n);
     statusBar()->showMessage(tr("On the robot's deck: %1").arg(lines.join(QStringLiteral("; "))), 30000);
   }
+  return true;
+}
+
+bool MainWindow::newFromCell(const QString& cell_file) {
+  if (!replaceProject(tr("Cannot create the project"), [&] { doc_->newFromCell(cell_file.toStdString()); }))
+    return false;
+  statusBar()->showMessage(tr("A new project on %1: grasps were generated for its parts. Open the demonstration video "
+                              "and extract its events (step 1).")
+                               .arg(QFileInfo(cell_file).fileName()),
+                           15000);
   return true;
 }
 
@@ -600,7 +620,10 @@ bool MainWindow::saveAs(const QString& file_in) {
     if (!options_.interactive) return false;
     QSettings settings;
     QString suggestion = settings.value(QStringLiteral("lastDir"), QDir::homePath()).toString() + QLatin1Char('/') +
-                         QString::fromStdString(doc_->sceneReference().task) + QStringLiteral(".demoplan");
+                         QString::fromStdString(doc_->sceneReference().is_cell()
+                                                    ? std::filesystem::path(doc_->sceneReference().cell).stem().string()
+                                                    : doc_->sceneReference().task) +
+                         QStringLiteral(".demoplan");
     file = QFileDialog::getSaveFileName(this, tr("Save project as"), suggestion, tr(kProjectFilter));
     if (file.isEmpty()) return false;
   }

@@ -6,6 +6,7 @@
 #include <QDateTime>
 #include <QMainWindow>
 #include <QPointer>
+#include <functional>
 #include <optional>
 
 #include "ui/document/document.h"
@@ -66,6 +67,7 @@ public:
   bool openProject(const QString& file);
   bool openSample();
   bool newFromBenchmark(const QString& task, const QString& robot, int pose);
+  bool newFromCell(const QString& cell_file);
   bool save();
   bool saveAs(const QString& file = QString());
   bool openVideo(const QString& file = QString());
@@ -107,6 +109,10 @@ private:
   bool maybeSave();
   void newFromBenchmarkDialog();
   void removeAutosave();
+  // Replaces the open project by what `make` loads into the document (the old project's
+  // autosave dropped first, a wait cursor meanwhile); a failure is reported under
+  // `failure_title`, the old project stays open.
+  bool replaceProject(const QString& failure_title, const std::function<void()>& make);
   bool offerRecovery(const QString& only_for = {});  // only_for: a project file; empty: any
   void showShortcuts();
   void showAbout();

@@ -14,6 +14,7 @@
 #include <limits>
 
 #include "core/geometry/ray_box.h"
+#include "core/scene/support.h"
 #include "ui/document/demo_poses.h"
 #include "ui/widgets/style.h"
 
@@ -357,6 +358,15 @@ void SceneView::rebuildScene() {
     pushLine(grid_.data, QVector3D(0, 0, 0.001f), e + QVector3D(0, 0, 0.001f), kAxisColors[a]);
   }
   grid_.dirty = true;
+  // Where parts may be put down: every fixed support polygon, outlined just above its surface.
+  supports_.data.clear();
+  for (const SupportPolygon& poly : support_polygons(s)) {
+    if (poly.furniture < 0) continue;
+    for (size_t k = 0; k < poly.vertices.size(); ++k)
+      pushLine(supports_.data, toQt(poly.vertices[k]) + QVector3D(0, 0, 0.001f),
+               toQt(poly.vertices[(k + 1) % poly.vertices.size()]) + QVector3D(0, 0, 0.001f), kSupportColor, 0.9f);
+  }
+  supports_.dirty = true;
 }
 
 void SceneView::uploadPending() {
@@ -402,7 +412,7 @@ void SceneView::releaseGl() {
     delete g.texture;
   }
   gpu_meshes_.clear();
-  for (LineBuffer* b : {&grid_, &tree_lines_, &tree_points_, &root_points_, &root_outline_, &path_trace_, &gizmo_, &selection_}) {
+  for (LineBuffer* b : {&grid_, &tree_lines_, &tree_points_, &root_points_, &root_outline_, &path_trace_, &gizmo_, &selection_, &supports_}) {
     if (b->vao) glDeleteVertexArrays(1, &b->vao);
     if (b->vbo) glDeleteBuffers(1, &b->vbo);
     b->vao = b->vbo = 0;
@@ -570,6 +580,7 @@ void SceneView::paintGL() {
   line_program_->setUniformValue("u_view_projection", vp);
   glLineWidth(1.0f);
   drawLines(grid_, GL_LINES, 1, false, true);
+  drawLines(supports_, GL_LINES, 1, false, true);
   // While the path plays, the trees step back so the robot and the path stand out.
   const bool playing_path = doc_->displayMode() == Document::DisplayMode::Result && doc_->planning()->interpolator();
   const float tree_alpha = playing_path ? 0.12f : 1.0f;
@@ -601,6 +612,19 @@ void SceneView::paintGL() {
       const int edges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3}, {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
       for (const auto& e : edges) pushLine(selection_.data, c[e[0]], c[e[1]], kSelectionColor);
     }
+    // Its grasp handles as open grippers: fingertips either side of the handle along the
+    // closing axis (z), fingers and wrist back along the approach (x).
+    const SceneState state = doc_->displayState();
+    if (selected < int(state.objects.size()))
+      for (const GraspFrame& h : scene_->objects[selected].srdf.handles) {
+        const Pose w = state.objects[selected] * h.pose;
+        const Eigen::Vector3d x = w.linear().col(0), z = w.linear().col(2), o = w.translation();
+        const double half = 0.5 * std::max(h.clearance, 0.01), finger = 0.04, wrist = 0.03;
+        const Eigen::Vector3d a = o - half * z, b = o + half * z, pa = a - finger * x, pb = b - finger * x;
+        const Eigen::Vector3d palm = o - finger * x;
+        for (const auto& [p, q] : {std::pair{a, pa}, std::pair{b, pb}, std::pair{pa, pb}, std::pair{palm, Eigen::Vector3d(palm - wrist * x)}})
+          pushLine(selection_.data, toQt(p), toQt(q), kHandleColor, 0.9f);
+      }
   }
   selection_.dirty = true;
   drawLines(selection_, GL_LINES, 1, false, true);

@@ -117,7 +117,7 @@ private:
   bool gl_failed_ = false;
   QString gl_info_;
   std::unique_ptr<QOpenGLShaderProgram> mesh_program_, line_program_;
-  LineBuffer grid_, tree_lines_, tree_points_, root_points_, root_outline_, path_trace_, gizmo_, selection_;
+  LineBuffer grid_, tree_lines_, tree_points_, root_points_, root_outline_, path_trace_, gizmo_, selection_, supports_;
   size_t tree_edges_ = 0, tree_roots_ = 0;
   bool show_trees_ = true;
   bool fit_pending_ = true;

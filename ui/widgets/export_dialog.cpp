@@ -39,7 +39,7 @@ ExportDialog::ExportDialog(Document* doc, bool interactive, QWidget* parent)
   format_->setToolTip(tr("The controller's language. Formats that do not fit the robot (URScript needs a 6-axis "
                          "arm) say so below."));
   // A sensible first choice for the robot.
-  const std::string robot = doc_->hasProject() ? doc_->sceneReference().robot : "";
+  const std::string robot = doc_->hasProject() ? doc_->scene().robot.name : "";
   const QString preferred = robot == "ur5" ? QStringLiteral("urscript") : robot == "panda" ? QStringLiteral("franka")
                                                                                             : QStringLiteral("sunrise");
   format_->setCurrentIndex(std::max(0, format_->findData(preferred)));

@@ -1,0 +1,33 @@
+#include "core/geometry/polygon_2d.h"
+
+#include <algorithm>
+
+namespace demoplan {
+
+double polygon_area(const std::vector<Eigen::Vector2d>& p) {
+  double a = 0.0;
+  for (size_t i = 0; i < p.size(); ++i) a += cross2(p[i], p[(i + 1) % p.size()]);
+  return 0.5 * a;
+}
+
+std::vector<int> hull_2d(const std::vector<Eigen::Vector2d>& p) {
+  std::vector<int> idx(p.size());
+  for (size_t i = 0; i < p.size(); ++i) idx[i] = static_cast<int>(i);
+  std::sort(idx.begin(), idx.end(), [&](int a, int b) { return p[a].x() < p[b].x() || (p[a].x() == p[b].x() && p[a].y() < p[b].y()); });
+  std::vector<int> h(2 * idx.size() + 1);
+  size_t k = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    const size_t start = k;
+    for (size_t j = 0; j < idx.size(); ++j) {
+      const int i = pass == 0 ? idx[j] : idx[idx.size() - 1 - j];
+      while (k >= start + 2 && cross2(p[h[k - 1]] - p[h[k - 2]], p[i] - p[h[k - 2]]) <= 0) --k;
+      h[k++] = i;
+    }
+    --k;  // the last point is the first of the other chain
+  }
+  h.resize(k);
+  return h;
+}
+
+
+}  // namespace demoplan

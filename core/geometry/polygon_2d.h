@@ -1,0 +1,19 @@
+#pragma once
+// Plane polygons: the few operations the placement code needs.
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace demoplan {
+
+// z of the cross product of two plane vectors.
+inline double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Signed area: positive when counter-clockwise.
+double polygon_area(const std::vector<Eigen::Vector2d>& polygon);
+
+// Indices of the convex hull of the points, counter-clockwise, without collinear points
+// (Andrew's monotone chain).
+std::vector<int> hull_2d(const std::vector<Eigen::Vector2d>& points);
+
+}  // namespace demoplan

@@ -1,0 +1,160 @@
+// Cells as a user works with them from the command line: a cell made of files the test writes
+// itself (an STL part, a box table) planned through a one-pick demonstration; the bundled
+// example cells checked, their parts' grasps generated, random picks drawn and planned; and the
+// cell mistakes the issue lists refused with one line naming the file and the field.
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/app/cli_suite.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+using namespace demoplan::testing_support;
+
+const std::string kCells = std::string(DEMOPLAN_DATA_DIR) + "/../cells";
+
+// A closed box of sx x sy x sz millimetres centred at the origin, as binary STL.
+void write_box_stl(const fs::path& file, float sx, float sy, float sz) {
+  std::ofstream out(file, std::ios::binary);
+  char header[80] = "test box, millimetres";
+  out.write(header, 80);
+  const std::uint32_t n = 12;
+  out.write(reinterpret_cast<const char*>(&n), 4);
+  auto v = [&](int i) { return std::array<float, 3>{(i & 1 ? 0.5f : -0.5f) * sx, (i & 2 ? 0.5f : -0.5f) * sy, (i & 4 ? 0.5f : -0.5f) * sz}; };
+  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& f : faces)
+    for (const auto& t : {std::array<int, 3>{f[0], f[1], f[2]}, std::array<int, 3>{f[0], f[2], f[3]}}) {
+      const float normal[3] = {0, 0, 0};
+      out.write(reinterpret_cast<const char*>(normal), 12);
+      for (int k : t) out.write(reinterpret_cast<const char*>(v(k).data()), 12);
+      const std::uint16_t attr = 0;
+      out.write(reinterpret_cast<const char*>(&attr), 2);
+    }
+}
+
+Json pose(double x, double y, double z, double yaw = 0.0) { return {{"xyz", {x, y, z}}, {"rpy", {0.0, 0.0, yaw}}}; }
+
+// A Panda on a table with one part of `part_mm` given by an STL the test writes.
+Json own_cell(const fs::path& dir, float sx, float sy, float sz) {
+  write_box_stl(dir / "part.stl", sx, sy, sz);
+  return {{"format", "demoplan-cell"},
+          {"version", 1},
+          {"name", "test cell"},
+          {"robot", {{"bundled", "panda"}, {"base", pose(0, 0, 0.75)}}},
+          {"furniture", {{{"name", "table"}, {"box", {1.2, 1.0, 0.75}}, {"pose", pose(0.4, 0, 0.375)}, {"supports", "auto"}}}},
+          {"parts", {{{"name", "block"}, {"mesh", "part.stl"}, {"scale", 0.001},
+                      {"pose", pose(0.45, -0.2, 0.75 + sz / 2000.0 + 0.001)}}}}};
+}
+
+// Grasp the part where it rests, put it down 35 cm further and turned a quarter.
+Json one_pick(double z) {
+  auto matrix = [](double x, double y, double z, double yaw) {
+    const double c = std::cos(yaw), s = std::sin(yaw);
+    return Json{{c, -s, 0, x}, {s, c, 0, y}, {0, 0, 1, z}, {0, 0, 0, 1}};
+  };
+  return {{"format", "demoplan-demonstration"},
+          {"version", 1},
+          {"task", "test cell"},
+          {"fps", 30},
+          {"objects", {"block"}},
+          {"events",
+           {{{"frame", 20}, {"object", "block"}, {"type", "grasp"}, {"confidence", 1.0}, {"poses", {{"block", matrix(0.45, -0.2, z, 0)}}}},
+            {{"frame", 60}, {"object", "block"}, {"type", "release"}, {"confidence", 1.0},
+             {"poses", {{"block", matrix(0.45, 0.15, z, M_PI / 2)}}}}}}};
+}
+
+class CliCell : public CliSuite {
+protected:
+  static fs::path write(const std::string& name, const Json& j) {
+    write_text(dir_ / name, j.dump(1));
+    return dir_ / name;
+  }
+};
+
+TEST_F(CliCell, ACellMadeOfTheUsersFilesIsPlannedAndValidated) {
+  const fs::path cell = write("own.cell.json", own_cell(dir_, 40, 50, 80));
+  const fs::path demo = write("own.demo.json", one_pick(0.75 + 0.04 + 0.001));
+  const fs::path path = dir_ / "own.path.json";
+  const CliResult r = run({"plan", "--cell", cell.string(), "--demo", demo.string(), "--seed", "1", "--time-limit", "60",
+                           "--out", path.string(), "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  EXPECT_EQ(j["cell"], cell.string());
+  EXPECT_TRUE(j["solved"].get<bool>());
+  EXPECT_TRUE(j["valid"].get<bool>()) << j["validation_message"];
+  EXPECT_EQ(j["grasps"].get<int>(), 1);
+  // The saved path, judged again from the same files.
+  const CliResult v = run({"validate", path.string(), "--cell", cell.string(), "--demo", demo.string(), "--json"});
+  ASSERT_EQ(v.code, 0) << v.err;
+  EXPECT_TRUE(Json::parse(v.out)["valid"].get<bool>());
+  // And exported for the controller, its blends checked in the cell.
+  const fs::path program = dir_ / "own.csv";
+  const CliResult e = run({"export", path.string(), "--cell", cell.string(), "--format", "csv", "--out", program.string(), "--json"});
+  ASSERT_EQ(e.code, 0) << e.err;
+  EXPECT_TRUE(fs::exists(program));
+}
+
+TEST_F(CliCell, ExampleCellsLoadCollisionFreeWithGeneratedGrasps) {
+  for (const std::string name : {"ur5_workbench", "iiwa_shelf"}) {
+    const CliResult r = run({"check", "--cell", kCells + "/" + name + ".json", "--seconds", "0.1", "--json"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(Json::parse(r.out)["start_collision_free"].get<bool>()) << name;
+  }
+  const CliResult g = run({"grasps", "--cell", kCells + "/ur5_workbench.json", "--part", "bracket", "--json"});
+  ASSERT_EQ(g.code, 0) << g.err;
+  const Json j = Json::parse(g.out);
+  ASSERT_GE(j["handles"].size(), 2u);
+  for (const auto& h : j["handles"]) {
+    EXPECT_EQ(h["pose"].size(), 4u);
+    EXPECT_GE(h["quality"].get<double>(), 0.0);
+    EXPECT_LE(h["quality"].get<double>(), 1.0);
+  }
+  EXPECT_GE(j["placements"].get<int>(), 3);
+}
+
+TEST_F(CliCell, RandomPicksInTheWorkbenchCellArePlannedValid) {
+  const fs::path demo = dir_ / "random.demo.json";
+  const std::string cell = kCells + "/ur5_workbench.json";
+  const CliResult d = run({"demo", "--cell", cell, "--picks", "2", "--seed", "1", "--out", demo.string(), "--json"});
+  ASSERT_EQ(d.code, 0) << d.err;
+  EXPECT_EQ(Json::parse(d.out)["picks"].size(), 2u);
+  const CliResult r = run({"plan", "--cell", cell, "--demo", demo.string(), "--seed", "1", "--time-limit", "60", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(Json::parse(r.out)["valid"].get<bool>());
+}
+
+// One line on stderr, exit 2, naming the file and the field.
+void expect_refused(const CliResult& r, const std::string& file, const std::string& field, const std::string& why) {
+  EXPECT_EQ(r.code, 2) << r.err;
+  const auto l = lines(r.err);
+  ASSERT_FALSE(l.empty());
+  EXPECT_NE(l.back().find(file), std::string::npos) << r.err;
+  EXPECT_NE(l.back().find(field), std::string::npos) << r.err;
+  EXPECT_NE(l.back().find(why), std::string::npos) << r.err;
+}
+
+TEST_F(CliCell, CellMistakesAreRefusedNamingFileAndField) {
+  Json missing = own_cell(dir_, 40, 50, 80);
+  missing["parts"][0]["mesh"] = "nowhere.stl";
+  const fs::path m = write("missing.cell.json", missing);
+  expect_refused(run({"check", "--cell", m.string()}), m.string(), "parts[0].mesh", "no such file");
+
+  const fs::path wide = write("wide.cell.json", own_cell(dir_, 150, 120, 100));
+  expect_refused(run({"grasps", "--cell", wide.string(), "--part", "block"}), wide.string(), "parts[0].handles", "too wide");
+
+  Json blocked = own_cell(dir_, 40, 50, 80);
+  blocked["furniture"].push_back({{"name", "post"}, {"box", {0.1, 0.1, 1.0}}, {"pose", pose(0, 0, 1.2)}});
+  const fs::path b = write("blocked.cell.json", blocked);
+  expect_refused(run({"check", "--cell", b.string()}), b.string(), "robot", "starts in collision");
+
+  expect_refused(run({"plan", "--cell", m.string()}), m.string(), "", "--demo");
+}
+
+}  // namespace
