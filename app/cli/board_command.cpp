@@ -1,5 +1,6 @@
 // demoplan-cli board: a ChArUco calibration board, as a file for `calibrate` and a page to print
 // at true scale (issue 15).
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -50,6 +51,11 @@ int run_board(const BoardCliOptions& o) {
   perception::validate(b, [&](const std::string& field, const std::string& reason) {
     throw InputError(o.out, option_of(field), reason);
   });
+  // A page beyond A0 at the DPI asked for is surely a unit mistake (metres for mm).
+  const double page_mm = std::max(b.width(), b.height()) * 1000 + 2 * perception::kPrintMarginMm + perception::kPrintFooterMm;
+  if (!o.image.empty() && page_mm > 1200)
+    throw InputError(o.out, "--square-mm", "the page would be " + std::to_string(int(page_mm)) +
+                                               " mm long; larger than A0 (1189 mm): are the sizes in mm?");
   perception::save_charuco_board(o.out, b);
   cv::Size image_size;
   if (!o.image.empty()) {

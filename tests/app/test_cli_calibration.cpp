@@ -90,7 +90,12 @@ TEST_F(CliCalibration, BoardBadInput) {
   EXPECT_NE(e.find("--marker-mm"), std::string::npos) << e;
   e = error_line(run({"board", "--dictionary", "DICT_FOO", "--out", out}));
   EXPECT_NE(e.find("--dictionary"), std::string::npos) << e;
+  // Metres typed as millimetres: a 2.1 m page.
+  e = error_line(run({"board", "--square-mm", "300", "--marker-mm", "220", "--out", out, "--image",
+                      (work_ / "board.png").string()}));
+  EXPECT_NE(e.find("--square-mm"), std::string::npos) << e;
   EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(work_ / "board.png"));
 }
 
 TEST_F(CliCalibration, SynthBoardThenCalibrateJson) {
