@@ -29,6 +29,7 @@ protected:
   static void SetUpTestSuite() {
     dir_ = fs::temp_directory_path() / ("demoplan_charuco_calibration_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
+    fs::create_directories(dir_);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
   static fs::path dir_;
