@@ -31,6 +31,9 @@ Command register_figure_command(CLI::App& app);
 Command register_part_command(CLI::App& app);
 Command register_grasps_command(CLI::App& app);
 Command register_demo_command(CLI::App& app);
+Command register_board_command(CLI::App& app);
+Command register_calibrate_command(CLI::App& app);
+Command register_synth_board_command(CLI::App& app);
 
 // The benchmark data folder: --data-dir, else $DEMOPLAN_DATA_DIR, else the bundled copy.
 std::string default_data_dir();

@@ -24,6 +24,7 @@
 #include "core/cell/cell.h"
 #include "core/project/project.h"
 #include "perception/camera/camera_model.h"
+#include "perception/camera/charuco_board.h"
 #include "perception/extraction/tracks_file.h"
 #include "perception/importers/bop_csv.h"
 #include "perception/importers/hand_detections.h"
@@ -191,11 +192,17 @@ TEST_F(FuzzRegressions, Tracks) {
             0u);
 }
 
+TEST_F(FuzzRegressions, CharucoBoard) {
+  EXPECT_GT(expect_each_input_loads_or_fails_cleanly("charuco_board", scratch.dir / "input.json",
+                                                     [](const std::string& f) { perception::load_charuco_board(f).make(); }),
+            0u);
+}
+
 // Every fuzz target has a test above: a new tests/fuzz/fuzz_<target>.cpp needs one here too.
 TEST(FuzzRegressionsCoverage, EveryFuzzTargetIsReplayed) {
   const std::vector<std::string> replayed{"project", "cell", "demonstration", "path",         "urdf",    "srdf",
                                           "task",    "camera",        "camera_yaml",  "camera_xml", "marker_scene",
-                                          "bop_csv", "hand_detections", "tracks"};
+                                          "bop_csv", "hand_detections", "tracks", "charuco_board"};
   for (const auto& e : fs::directory_iterator(kSource / "tests/fuzz")) {
     const std::string name = e.path().filename().string();
     if (name.rfind("fuzz_", 0) != 0 || e.path().extension() != ".cpp") continue;
