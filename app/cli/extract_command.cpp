@@ -31,7 +31,18 @@ int run_extract(const ExtractCliOptions& o) {
     if (scene.camera.empty()) throw InputError(o.scene, "camera", "no camera file given (use --camera)");
     camera_path = (std::filesystem::path(o.scene).parent_path() / scene.camera).string();
   }
-  const perception::Camera camera = perception::load_camera(camera_path);
+  perception::Camera camera = perception::load_camera(camera_path);
+  if (!camera.world_T_camera && !camera.board) {
+    // A camera file from `calibrate` holds intrinsics only: the board that gives the camera's
+    // pose is the one the scene's own camera file describes.
+    const std::filesystem::path scene_camera = std::filesystem::path(o.scene).parent_path() / scene.camera;
+    if (!scene.camera.empty() && std::filesystem::is_regular_file(scene_camera))
+      camera.board = perception::load_camera(scene_camera.string()).board;
+    if (!camera.board)
+      throw InputError(camera_path, "world_T_camera",
+                       "the camera file gives neither the camera pose nor a board to find it from, and the scene's "
+                       "camera file gives no board either");
+  }
   perception::ExtractionOptions options;
   options.bop_csv = o.detections;
   options.hands_json = o.hands;

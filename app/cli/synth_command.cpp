@@ -14,13 +14,47 @@ namespace {
 
 struct SynthCliOptions {
   perception::SynthOptions synth;
+  std::string cell, script;  // a cell's demonstration in place of a benchmark task's
+  int picks = 3;
+  int calibration_views = 30;
   std::string out;
   bool no_board = false;
   bool json = false;
 };
 
+int run_cell_synth(const SynthCliOptions& o) {
+  perception::CellSynthOptions c;
+  c.render = o.synth;
+  c.cell = o.cell;
+  c.picks = o.picks;
+  c.script = o.script;
+  c.calibration_views = o.calibration_views;
+  const perception::CellSynthOutput r = perception::write_synthetic_cell_demonstration(c, o.out);
+  std::cerr << "synthetic demonstration of cell " << o.cell << " (" << r.picks << " picks)\n"
+            << "  frames       " << r.frames << " at " << r.fps << " fps\n"
+            << "  events       " << r.events << "\n"
+            << "  video        " << r.video << "\n"
+            << "  camera       " << r.camera << "\n"
+            << "  scene        " << r.scene << "\n"
+            << "  truth        " << r.truth << "\n"
+            << "  calibration  " << r.calibration_video << ", " << r.board << ", " << r.camera_truth << "\n";
+  if (!r.failure.empty()) std::cerr << "  fewer picks than asked: " << r.failure << "\n";
+  std::cerr << "  time         " << r.render_seconds << " s\n";
+  if (o.json)
+    std::cout << nlohmann::json{{"cell", o.cell},          {"picks", r.picks},        {"failure", r.failure},
+                                {"frames", r.frames},      {"fps", r.fps},            {"events", r.events},
+                                {"video", r.video},        {"camera", r.camera},      {"scene", r.scene},
+                                {"truth", r.truth},        {"calibration_video", r.calibration_video},
+                                {"board", r.board},        {"camera_truth", r.camera_truth},
+                                {"render_time_s", r.render_seconds}}
+                     .dump()
+              << std::endl;
+  return r.failure.empty() ? kOk : kFailed;
+}
+
 int run_synth(SynthCliOptions o) {
   o.synth.board = !o.no_board;
+  if (!o.cell.empty()) return run_cell_synth(o);
   const perception::SynthOutput r = perception::write_synthetic_demonstration(o.synth, o.out);
   std::cerr << "synthetic demonstration of " << o.synth.task << " (" << o.synth.robot << " pose " << o.synth.robot_pose
             << ")\n"
@@ -46,8 +80,15 @@ int run_synth(SynthCliOptions o) {
 
 Command register_synth_command(CLI::App& app) {
   auto o = std::make_shared<SynthCliOptions>();
-  CLI::App* sub = app.add_subcommand("synth", "render a synthetic demonstration video of a benchmark task, with ground truth");
-  sub->add_option("--task", o->synth.task, "task as <task>_<demo>, e.g. shelf_1")->capture_default_str();
+  CLI::App* sub = app.add_subcommand("synth", "render a synthetic demonstration video of a benchmark task or a cell, with ground truth");
+  auto* task = sub->add_option("--task", o->synth.task, "task as <task>_<demo>, e.g. shelf_1")->capture_default_str();
+  auto* cell = sub->add_option("--cell", o->cell, "a cell file (docs/cell.md) in place of a benchmark task")->excludes(task);
+  sub->add_option("--picks", o->picks, "with --cell: random doable picks to demonstrate")
+      ->check(CLI::Range(1, 50))->capture_default_str()->needs(cell);
+  sub->add_option("--script", o->script, "with --cell: a demoplan-pick-script file in place of random picks")
+      ->needs(cell);
+  sub->add_option("--calibration-views", o->calibration_views, "with --cell: frames of calibration.mp4")
+      ->check(CLI::Range(6, 200))->capture_default_str()->needs(cell);
   sub->add_option("--robot", o->synth.robot, "robot the scene is for: panda, ur5, kmr_iiwa")->capture_default_str();
   sub->add_option("--pose", o->synth.robot_pose, "robot base pose id of the task")->capture_default_str();
   sub->add_option("--out", o->out, "output folder (video.mp4, camera.json, scene.json, truth.json)")->required();
@@ -56,7 +97,7 @@ Command register_synth_command(CLI::App& app) {
   sub->add_option("--blur", o->synth.blur_px, "linear motion blur length, pixels")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
   sub->add_flag("--occlusion", o->synth.occlusion, "a pole passes in front of every carried part");
-  sub->add_option("--seed", o->synth.seed, "random seed (noise, blur direction, simulated detections)")->capture_default_str();
+  sub->add_option("--seed", o->synth.seed, "random seed (noise, blur direction, simulated detections, a cell's picks)")->capture_default_str();
   sub->add_option("--time-scale", o->synth.time_scale, "scale of every frame index (< 1: shorter video)")
       ->check(CLI::Range(0.1, 4.0))->capture_default_str();
   sub->add_option("--fourcc", o->synth.fourcc, "video codec: mp4v, avc1, MJPG, FFV1")->capture_default_str();

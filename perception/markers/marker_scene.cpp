@@ -51,6 +51,7 @@ MarkerScene load_marker_scene(const std::string& path) {
   s.robot = root.has("robot") ? root["robot"].string() : "";
   s.robot_pose = root.has("robot_pose") ? root["robot_pose"].integer() : 0;
   s.camera = root.has("camera") ? root["camera"].string() : "";
+  s.cell = root.has("cell") ? root["cell"].string() : "";
   s.dictionary = root["dictionary"].string();
   if (!is_marker_dictionary(s.dictionary)) root["dictionary"].fail("unknown ArUco dictionary '" + s.dictionary + "'");
   const JsonField objects = root["objects"];
@@ -88,7 +89,7 @@ void save_marker_scene(const std::string& path, const MarkerScene& s) {
       markers.push_back({{"id", m.id}, {"size", m.size}, {"object_T_marker", pose_to_json(m.object_T_marker)}});
     objects.push_back({{"id", o.id}, {"planning", o.planning}, {"markers", markers}});
   }
-  const Json j{{"format", kFormat},
+  Json j{{"format", kFormat},
                {"version", kVersion},
                {"conventions", "object_T_marker: marker frame (OpenCV: origin at the centre, z out of the face) in "
                                "the object frame; t in metres, q = [qx, qy, qz, qw]; size = black square side, m"},
@@ -98,6 +99,7 @@ void save_marker_scene(const std::string& path, const MarkerScene& s) {
                {"camera", s.camera},
                {"dictionary", s.dictionary},
                {"objects", objects}};
+  if (!s.cell.empty()) j["cell"] = s.cell;  // older readers ignore it
   write_json_file_atomic(path, j);
 }
 

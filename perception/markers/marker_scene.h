@@ -5,6 +5,8 @@
 // File "demoplan-marker-scene" version 1 (JSON):
 //   {"format": "demoplan-marker-scene", "version": 1,
 //    "task": "shelf_1", "robot": "panda", "robot_pose": 0,   // the benchmark scene it shows
+//    "cell": "../cells/ur5_workbench.json",                   // or the cell it shows (optional,
+//                                                             // relative to this file)
 //    "camera": "camera.json",                                 // relative to this file
 //    "dictionary": "DICT_4X4_100",
 //    "objects": [{"id": "YCBV_02", "planning": true,
@@ -39,6 +41,7 @@ struct MarkerScene {
   std::string task;
   std::string robot;
   int robot_pose = 0;
+  std::string cell;    // path of the cell file, as written (relative to the scene file); "" none
   std::string camera;  // path of the camera file, as written (relative to the scene file)
   std::string dictionary = "DICT_4X4_100";
   std::vector<MarkedObject> objects;

@@ -188,6 +188,59 @@ DemoScript make_demo_script(const BenchmarkTask& task, const std::vector<Eigen::
   return s;
 }
 
+DemoScript make_demo_script(const Demonstration& truth, const PoseList& start,
+                            const std::vector<Eigen::AlignedBox3d>& object_bounds, int tail) {
+  const size_t n = truth.object_ids.size();
+  if (start.size() != n || object_bounds.size() != n)
+    throw InputError(truth.task, "object_ids", "the start poses and part bounds must cover every part");
+  DemoScript s;
+  s.task = truth.task;
+  s.fps = truth.fps;
+  s.object_ids = truth.object_ids;
+  s.bounds = object_bounds;
+  std::vector<int> open(n, -1);  // the frame of each part's pending grasp
+  for (const auto& e : truth.events) {
+    if (e.object < 0 || static_cast<size_t>(e.object) >= n)
+      throw InputError(truth.task, "events", "an event names an unknown part");
+    int& g = open[e.object];
+    if (e.type == EventType::Grasp) {
+      if (g >= 0) throw InputError(truth.task, "events", "part " + truth.object_ids[e.object] + " is grasped twice");
+      g = e.frame;
+    } else {
+      if (g < 0) throw InputError(truth.task, "events", "part " + truth.object_ids[e.object] + " is released unheld");
+      s.carries.push_back({e.object, g, e.frame});
+      g = -1;
+    }
+  }
+  for (size_t o = 0; o < n; ++o)
+    if (open[o] >= 0) throw InputError(truth.task, "events", "part " + truth.object_ids[o] + " is never released");
+  std::sort(s.carries.begin(), s.carries.end(), [](auto& a, auto& b) { return a.grasp < b.grasp; });
+  s.frames = (truth.events.empty() ? 0 : truth.events.back().frame) + std::max(1, tail);
+  s.poses.assign(s.frames, start);
+  s.tray.assign(s.frames, std::nullopt);
+  // Every part rests where the last event before a frame put it; carried parts follow their
+  // lifted path in between.
+  PoseList current = start;
+  size_t next_event = 0;
+  for (int f = 0; f < s.frames; ++f) {
+    while (next_event < truth.events.size() && truth.events[next_event].frame <= f) {
+      const ContactEvent& e = truth.events[next_event++];
+      if (e.type == EventType::Release) current[e.object] = e.poses[e.object];
+    }
+    s.poses[f] = current;
+  }
+  for (const auto& c : s.carries) {
+    const Pose A = s.poses[c.grasp][c.object];
+    const auto release = std::find_if(truth.events.begin(), truth.events.end(), [&](auto& e) {
+      return e.frame == c.release && e.object == c.object && e.type == EventType::Release;
+    });
+    const Pose B = release->poses[c.object];
+    for (int f = c.grasp + 1; f < c.release; ++f)
+      s.poses[f][c.object] = carry_pose(A, B, double(f - c.grasp) / (c.release - c.grasp));
+  }
+  return s;
+}
+
 void add_hand(DemoScript& s, const Eigen::Vector3d& camera) {
   struct Attachment {
     int start, end, object;  // object -1: the tray

@@ -54,6 +54,13 @@ struct DemoScript {
 DemoScript make_demo_script(const BenchmarkTask& task, const std::vector<Eigen::AlignedBox3d>& object_bounds,
                             double time_scale = 1.0);
 
+// The motion of a demonstration given as its events (a cell's picks, cell_picks.h): every part
+// rests at its pose in the events, and is carried from each grasp of it to the next release of it
+// along carry_pose. `start` holds every part's pose before the first event; `tail` frames follow
+// the last release. Throws InputError when the events do not pair up per part.
+DemoScript make_demo_script(const Demonstration& truth, const PoseList& start,
+                            const std::vector<Eigen::AlignedBox3d>& object_bounds, int tail = 30);
+
 // Adds the hand: attached behind the part it carries (as seen from `camera_position`), or
 // behind the tray during a transport, and moving between them in between.
 void add_hand(DemoScript& script, const Eigen::Vector3d& camera_position);

@@ -6,10 +6,14 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <variant>
 
 #include <opencv2/imgproc.hpp>
 
+#include "core/cell/cell.h"
+#include "core/cell/cell_picks.h"
+#include "core/cell/cell_scene.h"
 #include "core/demo/benchmark_scene.h"
 #include "core/demo/benchmark_task.h"
 #include "core/error.h"
@@ -20,6 +24,7 @@
 #include "perception/importers/hand_detections.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/board_placement.h"
+#include "perception/synthetic/board_video.h"
 #include "perception/synthetic/camera_placement.h"
 #include "perception/synthetic/demo_script.h"
 #include "perception/synthetic/hand_model.h"
@@ -108,6 +113,49 @@ Assets load_assets(const BenchmarkTask& task) {
   return a;
 }
 
+// The furniture and parts of a scene built with visual meshes (a cell's): every visual of every
+// furniture link, the parts' visuals in their root link frame; the largest upward box top is the
+// table the extrinsics board may go on.
+Assets scene_assets(const Scene& scene) {
+  Assets a;
+  double best_area = 0;
+  for (const auto& f : scene.furniture)
+    for (size_t l = 0; l < f.model.links.size(); ++l)
+      for (const auto& g : f.model.links[l].visuals) {
+        RenderMesh m = mesh_of(g);
+        if (m.triangles.empty()) continue;
+        const Pose pose = f.link_poses[l] * g.origin;
+        Eigen::AlignedBox3d box;
+        for (const auto& v : m.vertices) box.extend(pose * v.cast<double>());
+        a.obstacles.push_back(box);
+        const auto* b = std::get_if<BoxShape>(&g.shape);
+        if (b && pose.linear().col(2).z() > 0.99 && b->size.x() * b->size.y() > best_area) {
+          best_area = b->size.x() * b->size.y();
+          Pose top = pose;
+          top.translation() += pose.linear().col(2) * (b->size.z() / 2);
+          a.table_top = top;
+          a.table_size = b->size.head<2>();
+        }
+        a.furniture.push_back({std::move(m), pose});
+      }
+  for (const auto& o : scene.objects) {
+    RenderMesh part;
+    for (const auto& g : o.model.links.front().visuals) {
+      RenderMesh m = mesh_of(g);
+      if (m.triangles.empty()) continue;
+      if (part.triangles.empty()) {
+        part = std::move(m);
+        for (auto& v : part.vertices) v = g.origin.cast<float>() * v;
+      } else {
+        part.append(m, g.origin);
+      }
+    }
+    if (part.triangles.empty()) throw InputError(o.id, "visual", "the part has no visual geometry to draw");
+    a.parts.push_back(std::move(part));
+  }
+  return a;
+}
+
 // A large floor of tiles, centred below `centre`.
 RenderMesh floor_mesh(const Eigen::Vector3d& centre) {
   RenderMesh m;
@@ -127,10 +175,11 @@ RenderMesh floor_mesh(const Eigen::Vector3d& centre) {
 
 // The marker images, one per id.
 struct MarkerArt {
+  std::string dictionary = kDictionary;
   std::map<int, cv::Mat> images;
   const cv::Mat& get(int id) {
     auto it = images.find(id);
-    if (it == images.end()) it = images.emplace(id, marker_image(kDictionary, id)).first;
+    if (it == images.end()) it = images.emplace(id, marker_image(dictionary, id)).first;
     return it->second;
   }
 };
@@ -165,49 +214,24 @@ std::vector<Eigen::Vector3d> box_corners(const Eigen::AlignedBox3d& b, const Pos
   return out;
 }
 
-}  // namespace
+// The ArUco board that gives a synthetic video's camera extrinsics, ids first_id .. first_id + 5.
+MarkerBoard extrinsics_board(int first_id, const std::string& dictionary = kDictionary) {
+  MarkerBoard board;
+  board.dictionary = dictionary;
+  board.markers_x = 3;
+  board.markers_y = 2;
+  board.marker_length = 0.07;
+  board.marker_separation = 0.015;
+  board.first_id = first_id;
+  return board;
+}
 
-SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::string& out_dir) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const BenchmarkTask task = load_benchmark_task(o.data_dir, o.task);
-  const auto pose_ids = benchmark_pose_ids(task, o.robot);
-  if (std::find(pose_ids.begin(), pose_ids.end(), o.robot_pose) == pose_ids.end())
-    throw InputError(task.file, "robot_poses", "task " + o.task + " has no pose " + std::to_string(o.robot_pose) +
-                                                   " for robot '" + o.robot + "'");
-  if (o.noise_sigma < 0 || o.blur_px < 0) throw InputError("synth options", "noise/blur", "must be >= 0");
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (!fs::is_directory(out_dir)) throw InputError(out_dir, "", "cannot create the output folder");
-
-  const Assets assets = load_assets(task);
-  std::vector<Eigen::AlignedBox3d> bounds;
-  for (const auto& p : assets.parts) bounds.push_back(p.bounds().cast<double>());
-  DemoScript script = make_demo_script(task, bounds, o.time_scale);
-  std::vector<std::vector<ObjectMarker>> part_markers;
-  for (size_t k = 0; k < script.object_ids.size(); ++k)
-    part_markers.push_back(box_face_markers(bounds[k], kMarkersPerPart * static_cast<int>(k)));
-  Camera camera = place_camera(script, assets.obstacles, part_markers);
-  add_hand(script, camera.world_T_camera->translation());
-  if (o.board && assets.table_top) {
-    MarkerBoard board;
-    board.dictionary = kDictionary;
-    board.markers_x = 3;
-    board.markers_y = 2;
-    board.marker_length = 0.07;
-    board.marker_separation = 0.015;
-    board.first_id = 90;
-    camera.board = place_board(script, *assets.table_top, assets.table_size, camera, assets.obstacles, board);
-  }
-
-  MarkerScene markers;
-  markers.task = task.name();
-  markers.robot = o.robot;
-  markers.robot_pose = o.robot_pose;
-  markers.camera = "camera.json";
-  markers.dictionary = kDictionary;
-  for (size_t k = 0; k < script.object_ids.size(); ++k)
-    markers.objects.push_back({script.object_ids[k], true, part_markers[k]});
-
+// Renders the video of `script` (the hand added) as `camera` sees it and writes it with the
+// camera, marker scene and truth files into `out_dir`.
+SynthOutput render_demonstration(const SynthOptions& o, const std::string& out_dir, const Assets& assets,
+                                 const DemoScript& script, const std::vector<Eigen::AlignedBox3d>& bounds,
+                                 const Camera& camera, const MarkerScene& markers, const Demonstration& truth,
+                                 std::chrono::steady_clock::time_point t0) {
   // The static part: floor, furniture, board.
   const Pose& world_T_camera = *camera.world_T_camera;
   Rasterizer r(camera.image_size, camera.fx, camera.fy, camera.cx, camera.cy, world_T_camera);
@@ -217,6 +241,8 @@ SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::stri
   r.draw(floor_mesh(centre), Pose::Identity());
   for (const auto& f : assets.furniture) r.draw(f.mesh, f.pose);
   MarkerArt art;
+  art.dictionary = markers.dictionary;
+  MarkerArt board_art;
   if (camera.board) {
     const MarkerBoard& b = *camera.board;
     const auto grid = b.make();
@@ -226,8 +252,9 @@ SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::stri
       for (const auto& c : m) extent.extend(Eigen::Vector3d(c.x, c.y, c.z));
     paper.translation() = b.world_T_board * Eigen::Vector3d(extent.center().x(), extent.center().y(), 0.0004);  // behind the markers
     r.draw(box_mesh({extent.sizes().x() + 0.04, extent.sizes().y() + 0.04, 0.0004}, {245, 245, 245}), paper);
+    board_art.dictionary = b.dictionary;
     for (size_t i = 0; i < grid->objPoints.size(); ++i)
-      r.draw_marker(art.get(grid->ids[i]), printed_marker_side(kDictionary, b.marker_length),
+      r.draw_marker(board_art.get(grid->ids[i]), printed_marker_side(b.dictionary, b.marker_length),
                     b.world_T_board * marker_frame_on_board(grid->objPoints[i]));
   }
   const cv::Mat static_color = r.color().clone(), static_depth = r.depth().clone();
@@ -267,7 +294,7 @@ SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::stri
       const Pose& P = script.poses[f][k];
       r.draw(assets.parts[k], P);
       for (const auto& m : markers.objects[k].markers)
-        r.draw_marker(art.get(m.id), printed_marker_side(kDictionary, m.size), P * m.object_T_marker);
+        r.draw_marker(art.get(m.id), printed_marker_side(markers.dictionary, m.size), P * m.object_T_marker);
     }
     r.draw(hand, script.hand[f]);
     if (o.occlusion)
@@ -330,7 +357,6 @@ SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::stri
   writer.finish();
   save_camera(out.camera, camera);
   save_marker_scene(out.scene, markers);
-  const Demonstration truth = script.truth();
   save_demonstration(out.truth, truth);
   out.events = static_cast<int>(truth.events.size());
   if (o.detections) {
@@ -339,6 +365,145 @@ SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::stri
     save_bop_csv(out.bop_csv, bop);
     save_hand_detections(out.hands, hands);
   }
+  out.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace
+
+SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::string& out_dir) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const BenchmarkTask task = load_benchmark_task(o.data_dir, o.task);
+  const auto pose_ids = benchmark_pose_ids(task, o.robot);
+  if (std::find(pose_ids.begin(), pose_ids.end(), o.robot_pose) == pose_ids.end())
+    throw InputError(task.file, "robot_poses", "task " + o.task + " has no pose " + std::to_string(o.robot_pose) +
+                                                   " for robot '" + o.robot + "'");
+  if (o.noise_sigma < 0 || o.blur_px < 0) throw InputError("synth options", "noise/blur", "must be >= 0");
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (!fs::is_directory(out_dir)) throw InputError(out_dir, "", "cannot create the output folder");
+
+  const Assets assets = load_assets(task);
+  std::vector<Eigen::AlignedBox3d> bounds;
+  for (const auto& p : assets.parts) bounds.push_back(p.bounds().cast<double>());
+  DemoScript script = make_demo_script(task, bounds, o.time_scale);
+  std::vector<std::vector<ObjectMarker>> part_markers;
+  for (size_t k = 0; k < script.object_ids.size(); ++k)
+    part_markers.push_back(box_face_markers(bounds[k], kMarkersPerPart * static_cast<int>(k)));
+  Camera camera = place_camera(script, assets.obstacles, part_markers);
+  add_hand(script, camera.world_T_camera->translation());
+  if (o.board && assets.table_top) camera.board = place_board(script, *assets.table_top, assets.table_size, camera, assets.obstacles, extrinsics_board(90));
+
+  MarkerScene markers;
+  markers.task = task.name();
+  markers.robot = o.robot;
+  markers.robot_pose = o.robot_pose;
+  markers.camera = "camera.json";
+  markers.dictionary = kDictionary;
+  for (size_t k = 0; k < script.object_ids.size(); ++k)
+    markers.objects.push_back({script.object_ids[k], true, part_markers[k]});
+
+  return render_demonstration(o, out_dir, assets, script, bounds, camera, markers, script.truth(), t0);
+}
+
+CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, const std::string& out_dir) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const SynthOptions& ro = o.render;
+  if (ro.noise_sigma < 0 || ro.blur_px < 0) throw InputError("synth options", "noise/blur", "must be >= 0");
+  if (!(ro.time_scale > 0.05 && ro.time_scale <= 4.0)) throw InputError("synth options", "time_scale", "must be in (0.05, 4]");
+  const Cell cell = load_cell(o.cell);
+  MeshCache cache;
+  CellSceneOptions scene_options;
+  scene_options.data_dir = ro.data_dir;
+  scene_options.load_visual_meshes = true;
+  scene_options.mesh_cache = &cache;
+  const Scene scene = build_cell_scene(cell, scene_options);
+  const SceneState start = cell_start_state(cell, scene);
+  CellSynthOutput out;
+  std::vector<ScriptedPick> picks;
+  if (!o.script.empty()) {
+    picks = load_pick_script(o.script, scene);
+  } else {
+    if (o.picks < 1) throw InputError("synth options", "picks", "must be >= 1");
+    const RandomPickReport r = random_picks(scene, start, o.picks, ro.seed);
+    picks = r.picks;
+    out.failure = r.failure;
+  }
+  if (picks.empty()) throw InputError(o.cell, "parts", "no pick to demonstrate: " + out.failure);
+  out.picks = static_cast<int>(picks.size());
+  PickTiming timing;
+  auto scaled = [&](int frames) { return std::max(4, static_cast<int>(std::lround(frames * ro.time_scale))); };
+  timing.lead_in = scaled(timing.lead_in);
+  timing.carry = scaled(timing.carry);
+  timing.between = scaled(timing.between);
+  const Demonstration truth = demonstration_from_picks(scene, start, picks, scene.name, timing);
+
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (!fs::is_directory(out_dir)) throw InputError(out_dir, "", "cannot create the output folder");
+  const Assets assets = scene_assets(scene);
+  std::vector<Eigen::AlignedBox3d> bounds;
+  for (const auto& p : assets.parts) bounds.push_back(p.bounds().cast<double>());
+  DemoScript script = make_demo_script(truth, start.objects, bounds, scaled(30));
+
+  // The cell's own markers where a part has them; the others get one on each face, with ids no
+  // cell marker uses.
+  std::set<int> used;
+  for (const auto& p : cell.parts)
+    for (const auto& m : p.markers) used.insert(m.id);
+  int next_id = 0;
+  auto free_block = [&](int size) {
+    for (;; ++next_id) {
+      bool clear = true;
+      for (int k = 0; k < size; ++k) clear = clear && !used.count(next_id + k);
+      if (clear) break;
+    }
+    const int first = next_id;
+    for (int k = 0; k < size; ++k) used.insert(next_id++);
+    return first;
+  };
+  std::vector<std::vector<ObjectMarker>> part_markers;
+  for (size_t k = 0; k < scene.objects.size(); ++k) {
+    const int c = cell.part_index(scene.objects[k].id);
+    std::vector<ObjectMarker> m;
+    if (c >= 0)
+      for (const auto& cm : cell.parts[c].markers) m.push_back({cm.id, cm.size, cm.pose});
+    if (m.empty()) m = box_face_markers(bounds[k], free_block(kMarkersPerPart));
+    part_markers.push_back(std::move(m));
+  }
+  Camera camera = place_camera(script, assets.obstacles, part_markers);
+  add_hand(script, camera.world_T_camera->translation());
+  if (ro.board && assets.table_top) {
+    // The board's ids must not be read as a part's when both use the same dictionary.
+    const int first = cell.marker_dictionary == kDictionary ? free_block(6) : 90;
+    camera.board = place_board(script, *assets.table_top, assets.table_size, camera, assets.obstacles, extrinsics_board(first));
+  }
+
+  MarkerScene markers;
+  markers.task = scene.name;
+  markers.cell = fs::relative(fs::absolute(o.cell), fs::absolute(out_dir)).string();
+  markers.robot = scene.robot.name;
+  markers.camera = "camera.json";
+  markers.dictionary = cell.marker_dictionary;
+  for (size_t k = 0; k < scene.objects.size(); ++k) markers.objects.push_back({scene.objects[k].id, true, part_markers[k]});
+  static_cast<SynthOutput&>(out) = render_demonstration(ro, out_dir, assets, script, bounds, camera, markers, truth, t0);
+  if (out.cancelled) return out;
+
+  // The intrinsics calibration video, rendered with the same intrinsics.
+  BoardVideoOptions bo;
+  bo.camera = camera;
+  bo.camera.world_T_camera.reset();
+  bo.camera.board.reset();
+  bo.views = o.calibration_views;
+  bo.seed = ro.seed;
+  bo.noise_sigma = ro.noise_sigma;
+  bo.fourcc = ro.fourcc;
+  bo.cancel = ro.cancel;
+  const BoardVideoOutput b = write_board_video(bo, out_dir);
+  out.cancelled = b.cancelled;
+  out.calibration_video = b.video;
+  out.board = b.board;
+  out.camera_truth = b.camera_truth;
   out.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

@@ -42,4 +42,26 @@ struct SynthOutput {
 // Throws InputError for an unknown task, robot or pose, or a task without subgoals.
 SynthOutput write_synthetic_demonstration(const SynthOptions& options, const std::string& out_dir);
 
+// A synthetic demonstration of a robot cell (core/cell): its furniture and parts (with the
+// cell's own markers where a part has them, else one on each face of its box), picks drawn at
+// random among the doable ones (cell_picks.h) or read from a pick script, and the hand carrying
+// each part. Besides the files above (scene.json names the cell), writes the calibration video
+// of the same camera: calibration.mp4, board.json, camera_truth.json (board_video.h).
+struct CellSynthOptions {
+  SynthOptions render;       // noise, blur, seed (also of the picks), time_scale, fourcc, board, progress
+  std::string cell;          // cell file
+  int picks = 3;             // random picks, when no script
+  std::string script;        // demoplan-pick-script file
+  int calibration_views = 30;
+};
+
+struct CellSynthOutput : SynthOutput {
+  std::string calibration_video, board, camera_truth;
+  int picks = 0;
+  std::string failure;  // fewer random picks than asked: why (the video shows those found)
+};
+
+// Throws InputError for a bad cell or pick script.
+CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& options, const std::string& out_dir);
+
 }  // namespace demoplan::perception
