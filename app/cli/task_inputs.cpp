@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "core/cell/cell_scene.h"
+#include "core/demo/settle_demonstration.h"
 #include "core/demo/benchmark_demonstration.h"
 #include "core/error.h"
 #include "core/part/grasp_handles.h"
@@ -93,7 +94,10 @@ LoadedTask load_task_inputs(const TaskInputs& in) {
   LoadedTask t;
   if (!in.cell.empty()) {
     if (in.demo.empty()) throw InputError(in.cell, "", "a cell needs a demonstration: give --demo");
-    t.instance = make_benchmark_instance(load_cell_scene(in.cell, in.data_dir), load_demonstration(in.demo));
+    auto scene = load_cell_scene(in.cell, in.data_dir);
+    // A demonstration from video rests its parts a millimetre off their supports.
+    Demonstration demo = settle_on_supports(*scene, load_demonstration(in.demo));
+    t.instance = make_benchmark_instance(std::move(scene), std::move(demo));
     return t;
   }
   t.task = load_benchmark_task(in.data_dir, in.task);

@@ -16,7 +16,11 @@ using namespace demoplan::testing_support;
 
 const std::string kCell = std::string(DEMOPLAN_DATA_DIR) + "/../cells/ur5_workbench.json";
 
-class CliCellVideo : public CliSuite {};
+class CliCellVideo : public CliSuite {
+protected:
+  // calibrate and extract take no --data-dir.
+  static CliResult run_plain(const std::vector<std::string>& args) { return run_cli(args, dir_); }
+};
 
 TEST_F(CliCellVideo, SynthesisedDemonstrationOfAnExampleCellIsExtractedAndPlanned) {
   const fs::path d = dir_ / "synth";
@@ -34,13 +38,13 @@ TEST_F(CliCellVideo, SynthesisedDemonstrationOfAnExampleCellIsExtractedAndPlanne
   ASSERT_TRUE(scene.contains("cell"));
   EXPECT_TRUE(fs::equivalent(d / scene["cell"].get<std::string>(), kCell));
 
-  const CliResult c = run({"calibrate", out + "/calibration.mp4", "--board", out + "/board.json", "--out",
+  const CliResult c = run_plain({"calibrate", out + "/calibration.mp4", "--board", out + "/board.json", "--out",
                            out + "/cam.json", "--json"});
   ASSERT_EQ(c.code, 0) << c.err;
   const Json cam = Json::parse(std::ifstream(d / "cam.json"));
   EXPECT_FALSE(cam.contains("world_T_camera"));  // the pose must come from the board in the video
 
-  const CliResult x = run({"extract", out + "/video.mp4", "--camera", out + "/cam.json", "--scene", out + "/scene.json",
+  const CliResult x = run_plain({"extract", out + "/video.mp4", "--camera", out + "/cam.json", "--scene", out + "/scene.json",
                            "--out", out + "/demo.json", "--json"});
   ASSERT_EQ(x.code, 0) << x.err;
   EXPECT_NE(Json::parse(x.out)["extrinsics"].get<std::string>().find("board"), std::string::npos);
@@ -71,7 +75,7 @@ TEST_F(CliCellVideo, ExtractWithoutCameraPoseOrBoardIsRefusedNamingTheCameraFile
   std::ofstream(d / "scene.json") << R"({"format": "demoplan-marker-scene", "version": 1, "camera": "missing.json",
     "dictionary": "DICT_4X4_100", "objects": [{"id": "a", "markers": [{"id": 0, "size": 0.05,
     "object_T_marker": {"t": [0, 0, 0], "q": [0, 0, 0, 1]}}]}]})";
-  const CliResult x = run({"extract", (d / "video.mp4").string(), "--camera", (d / "cam.json").string(), "--scene",
+  const CliResult x = run_plain({"extract", (d / "video.mp4").string(), "--camera", (d / "cam.json").string(), "--scene",
                            (d / "scene.json").string(), "--out", (d / "demo.json").string()});
   EXPECT_EQ(x.code, 2) << x.err;
   EXPECT_NE(x.err.find("cam.json"), std::string::npos) << x.err;

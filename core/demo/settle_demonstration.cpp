@@ -1,0 +1,21 @@
+#include "core/demo/settle_demonstration.h"
+
+#include "core/scene/support.h"
+
+namespace demoplan {
+
+Demonstration settle_on_supports(const Scene& scene, Demonstration d, const SettleOptions& options) {
+  std::vector<std::vector<Eigen::Vector3d>> furniture;
+  for (const auto& s : support_polygons(scene))
+    if (s.robot_link < 0) furniture.push_back(s.vertices);
+  std::vector<std::vector<std::vector<Eigen::Vector3d>>> faces;
+  for (const auto& o : scene.objects) faces.push_back(object_contact_polygons(o));
+  for (auto& e : d.events)
+    for (size_t o = 0; o < e.poses.size() && o < faces.size(); ++o) {
+      if (!e.pose_frame(static_cast<int>(o)).empty()) continue;
+      if (auto snapped = snap_to_support(faces[o], e.poses[o], furniture, options.snap)) e.poses[o] = snapped->pose;
+    }
+  return d;
+}
+
+}  // namespace demoplan
