@@ -9,6 +9,7 @@ CLI="${DEMOPLAN_CLI:-build/app/demoplan-cli}"
 OUT="${1:-/tmp/cell_e2e}"
 SEEDS="${2:-$(seq 1 10)}"
 CELLS="${3:-ur5_workbench iiwa_shelf}"
+DATA=(--data-dir resources/gtamp)
 mkdir -p "$OUT"
 : > "$OUT/results.jsonl"
 # The JSON a step printed, or null when it failed before printing any.
@@ -18,13 +19,13 @@ for cell in $CELLS; do
     d="$OUT/$cell/$seed"
     rm -rf "$d" && mkdir -p "$d"
     c="resources/cells/$cell.json"
-    "$CLI" synth --cell "$c" --picks 3 --seed "$seed" --out "$d" --json > "$d/synth.out" 2> "$d/synth.err"; s1=$?
+    "$CLI" synth "${DATA[@]}" --cell "$c" --picks 3 --seed "$seed" --out "$d" --json > "$d/synth.out" 2> "$d/synth.err"; s1=$?
     "$CLI" calibrate "$d/calibration.mp4" --board "$d/board.json" --out "$d/cam.json" --json > "$d/calibrate.out" 2> "$d/calibrate.err"; s2=$?
     "$CLI" extract "$d/video.mp4" --camera "$d/cam.json" --scene "$d/scene.json" --out "$d/demo.json" --json > "$d/extract.out" 2> "$d/extract.err"; s3=$?
-    "$CLI" evaluate "$d/demo.json" --truth "$d/truth.json" --json > "$d/evaluate.out" 2> "$d/evaluate.err"; s4=$?
-    "$CLI" plan --cell "$c" --demo "$d/demo.json" --seed 1 --out "$d/p.json" --json > "$d/plan.out" 2> "$d/plan.err"; s5=$?
-    "$CLI" validate "$d/p.json" --cell "$c" --demo "$d/demo.json" --json > "$d/validate.out" 2> "$d/validate.err"; s6=$?
-    "$CLI" export "$d/p.json" --cell "$c" --format csv --out "$d/x.csv" > /dev/null 2> "$d/export.err"; s7=$?
+    "$CLI" evaluate "${DATA[@]}" "$d/demo.json" --truth "$d/truth.json" --json > "$d/evaluate.out" 2> "$d/evaluate.err"; s4=$?
+    "$CLI" plan "${DATA[@]}" --cell "$c" --demo "$d/demo.json" --seed 1 --out "$d/p.json" --json > "$d/plan.out" 2> "$d/plan.err"; s5=$?
+    "$CLI" validate "${DATA[@]}" "$d/p.json" --cell "$c" --demo "$d/demo.json" --json > "$d/validate.out" 2> "$d/validate.err"; s6=$?
+    "$CLI" export "${DATA[@]}" "$d/p.json" --cell "$c" --format csv --out "$d/x.csv" > /dev/null 2> "$d/export.err"; s7=$?
     echo "{\"cell\": \"$cell\", \"seed\": $seed, \"exit\": {\"synth\": $s1, \"calibrate\": $s2, \"extract\": $s3, \"evaluate\": $s4, \"plan\": $s5, \"validate\": $s6, \"export\": $s7}, \"synth\": $(json_or_null "$d/synth.out"), \"calibrate\": $(json_or_null "$d/calibrate.out"), \"truth\": $(cat "$d/camera_truth.json" 2>/dev/null || echo null), \"evaluate\": $(json_or_null "$d/evaluate.out"), \"plan\": $(json_or_null "$d/plan.out"), \"validate\": $(json_or_null "$d/validate.out")}" | tr -d '\n' >> "$OUT/results.jsonl"
     echo >> "$OUT/results.jsonl"
     echo "$cell seed $seed: synth $s1 calibrate $s2 extract $s3 evaluate $s4 plan $s5 validate $s6 export $s7" >&2

@@ -53,6 +53,8 @@ struct Assets {
   std::vector<RenderMesh> parts;  // planning objects, task order
   std::optional<Pose> table_top;
   Eigen::Vector2d table_size = Eigen::Vector2d::Zero();
+  // A cell's places for the extrinsics board, tried in turn: upward box tops, largest first.
+  std::vector<std::pair<Pose, Eigen::Vector2d>> board_tops;
 };
 
 cv::Vec3f bgr_of(const Eigen::Vector4d& rgba) { return {float(rgba[2] * 255), float(rgba[1] * 255), float(rgba[0] * 255)}; }
@@ -114,11 +116,10 @@ Assets load_assets(const BenchmarkTask& task) {
 }
 
 // The furniture and parts of a scene built with visual meshes (a cell's): every visual of every
-// furniture link, the parts' visuals in their root link frame; the largest upward box top is the
-// table the extrinsics board may go on.
+// furniture link, the parts' visuals in their root link frame; the upward box tops are where the
+// extrinsics board may go.
 Assets scene_assets(const Scene& scene) {
   Assets a;
-  double best_area = 0;
   for (const auto& f : scene.furniture)
     for (size_t l = 0; l < f.model.links.size(); ++l)
       for (const auto& g : f.model.links[l].visuals) {
@@ -129,12 +130,10 @@ Assets scene_assets(const Scene& scene) {
         for (const auto& v : m.vertices) box.extend(pose * v.cast<double>());
         a.obstacles.push_back(box);
         const auto* b = std::get_if<BoxShape>(&g.shape);
-        if (b && pose.linear().col(2).z() > 0.99 && b->size.x() * b->size.y() > best_area) {
-          best_area = b->size.x() * b->size.y();
+        if (b && pose.linear().col(2).z() > 0.99) {
           Pose top = pose;
           top.translation() += pose.linear().col(2) * (b->size.z() / 2);
-          a.table_top = top;
-          a.table_size = b->size.head<2>();
+          a.board_tops.push_back({top, b->size.head<2>()});
         }
         a.furniture.push_back({std::move(m), pose});
       }
@@ -153,6 +152,8 @@ Assets scene_assets(const Scene& scene) {
     if (part.triangles.empty()) throw InputError(o.id, "visual", "the part has no visual geometry to draw");
     a.parts.push_back(std::move(part));
   }
+  std::stable_sort(a.board_tops.begin(), a.board_tops.end(),
+                   [](auto& x, auto& y) { return x.second.prod() > y.second.prod(); });
   return a;
 }
 
@@ -473,10 +474,18 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
   }
   Camera camera = place_camera(script, assets.obstacles, part_markers);
   add_hand(script, camera.world_T_camera->translation());
-  if (ro.board && assets.table_top) {
+  if (ro.board) {
     // The board's ids must not be read as a part's when both use the same dictionary.
-    const int first = cell.marker_dictionary == kDictionary ? free_block(6) : 90;
-    camera.board = place_board(script, *assets.table_top, assets.table_size, camera, assets.obstacles, extrinsics_board(first));
+    const MarkerBoard board = extrinsics_board(cell.marker_dictionary == kDictionary ? free_block(6) : 90);
+    // On the first top with a free spot the camera sees, else on the floor around the parts.
+    auto tops = assets.board_tops;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto& p : start.objects) centre += p.translation() / double(start.objects.size());
+    Pose floor = Pose::Identity();
+    floor.translation() << centre.x(), centre.y(), 0.0;
+    tops.push_back({floor, Eigen::Vector2d(3.0, 3.0)});
+    for (const auto& [top, size] : tops)
+      if ((camera.board = place_board(script, top, size, camera, assets.obstacles, board))) break;
   }
 
   MarkerScene markers;
