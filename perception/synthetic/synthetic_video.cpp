@@ -477,15 +477,33 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
   if (ro.board) {
     // The board's ids must not be read as a part's when both use the same dictionary.
     const MarkerBoard board = extrinsics_board(cell.marker_dictionary == kDictionary ? free_block(6) : 90);
-    // On the first top with a free spot the camera sees, else on the floor around the parts.
+    // On the first top with a free spot the camera sees, else on a free floor tile near the
+    // camera (tiles under furniture are left out: the obstacle test does not see into a box).
     auto tops = assets.board_tops;
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (const auto& p : start.objects) centre += p.translation() / double(start.objects.size());
-    Pose floor = Pose::Identity();
-    floor.translation() << centre.x(), centre.y(), 0.0;
-    tops.push_back({floor, Eigen::Vector2d(3.0, 3.0)});
+    std::vector<std::pair<double, Pose>> tiles;
+    const double tile = 0.5;
+    const Eigen::Vector3d eye = camera.world_T_camera->translation();
+    for (int i = -6; i <= 6; ++i)
+      for (int j = -6; j <= 6; ++j) {
+        const Eigen::Vector2d c(eye.x() + i * tile, eye.y() + j * tile);
+        const Eigen::AlignedBox2d t(c - Eigen::Vector2d::Constant(tile / 2), c + Eigen::Vector2d::Constant(tile / 2));
+        bool free = true;
+        for (const auto& b : assets.obstacles)
+          free = free && !(b.min().z() < 0.05 && t.intersects(Eigen::AlignedBox2d(b.min().head<2>(), b.max().head<2>())));
+        Pose floor = Pose::Identity();
+        floor.translation() << c.x(), c.y(), 0.0;
+        if (free) tiles.push_back({(c - eye.head<2>()).norm(), floor});
+      }
+    std::sort(tiles.begin(), tiles.end(), [](auto& a, auto& b) { return a.first < b.first; });
+    for (const auto& t : tiles) tops.push_back({t.second, Eigen::Vector2d(tile, tile)});
     for (const auto& [top, size] : tops)
       if ((camera.board = place_board(script, top, size, camera, assets.obstacles, board))) break;
+    // Else where the hand passes over it: the board is seen in the frames before the hand comes
+    // (extract reads it from the first frames that show it).
+    DemoScript parts_only = script;
+    parts_only.hand.clear();
+    for (size_t k = 0; k < tops.size() && !camera.board; ++k)
+      camera.board = place_board(parts_only, tops[k].first, tops[k].second, camera, assets.obstacles, board);
   }
 
   MarkerScene markers;
