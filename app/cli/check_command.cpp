@@ -76,12 +76,15 @@ int run_check(const CheckOptions& o) {
   const double cps = measure_checks_per_second(checker, start, o.seconds);
 
   size_t links = scene.robot.model.links.size();
-  std::cerr << scene.name << " (" << o.data_dir << ")\n"
+  std::cerr << scene.name << " (" << (cell ? o.cell : o.data_dir) << ")\n"
             << "  dof                 " << scene.robot.model.nq << "\n"
             << "  links               " << links << "\n"
             << "  collision pairs     " << checker.pair_count() << "\n"
             << "  start               " << (start_free ? "collision-free" : "IN COLLISION: " + start_hit.first + " / " + start_hit.second) << "\n"
-            << "  goal                " << (goal_free ? "collision-free" : "IN COLLISION: " + goal_hit.first + " / " + goal_hit.second) << "\n"
+            << "  goal                "
+            << (cell ? std::string("(a cell's goal is its demonstration's)")
+                     : goal_free ? "collision-free" : "IN COLLISION: " + goal_hit.first + " / " + goal_hit.second)
+            << "\n"
             << "  checks per second   " << static_cast<long>(cps) << " (random configurations, one thread)\n"
             << "  load time           " << load_s << " s\n";
   if (o.json) {

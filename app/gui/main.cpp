@@ -80,7 +80,8 @@ int main(int argc, char** argv) {
   QCommandLineOption camera({QStringLiteral("camera")}, QStringLiteral("camera calibration of the new project"), QStringLiteral("FILE"));
   QCommandLineOption markers({QStringLiteral("markers")}, QStringLiteral("marker scene of the new project"), QStringLiteral("FILE"));
   QCommandLineOption save_as({QStringLiteral("save-as")}, QStringLiteral("write the new project to FILE and quit"), QStringLiteral("FILE"));
-  parser.addOptions({data_dir, screenshot, delay, sample, fresh, create, video, camera, markers, save_as});
+  QCommandLineOption select({QStringLiteral("select")}, QStringLiteral("select this part, as a click in the 3D view does (its handles drawn)"), QStringLiteral("PART"));
+  parser.addOptions({data_dir, screenshot, delay, sample, fresh, create, video, camera, markers, save_as, select});
   parser.process(app);
 
   const std::string data = parser.isSet(data_dir) ? QDir(parser.value(data_dir)).absolutePath().toStdString()
@@ -104,6 +105,11 @@ int main(int argc, char** argv) {
   const QStringList args = parser.positionalArguments();
   if (parser.isSet(sample)) window.openSample();
   else window.startUp(args.isEmpty() ? QString() : args.front());
+  if (parser.isSet(select) && window.document()->hasProject()) {
+    const int part = window.document()->scene().object_index(parser.value(select).toStdString());
+    if (part < 0) std::fprintf(stderr, "demoplan: --select: no part '%s' in the scene\n", qPrintable(parser.value(select)));
+    else window.document()->selectObject(part);
+  }
 
   if (parser.isSet(screenshot)) {
     const QString file = parser.value(screenshot);

@@ -130,6 +130,18 @@ TEST_F(CliCell, RandomPicksInTheWorkbenchCellArePlannedValid) {
   EXPECT_TRUE(Json::parse(r.out)["valid"].get<bool>());
 }
 
+TEST_F(CliCell, ABenchmarkTaskIsPlannedWithGeneratedHandles) {
+  const CliResult r = run({"plan", "--task", "shelf_1", "--robot", "panda", "--pose", "0", "--handles", "generated",
+                           "--seed", "1", "--time-limit", "60", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  EXPECT_EQ(j["handles"], "generated");
+  EXPECT_TRUE(j["valid"].get<bool>());
+  EXPECT_EQ(j["grasps"].get<int>(), 2);
+  // Against the benchmark's own start and goal: the validator does not know the handles changed.
+  EXPECT_EQ(j["validated_against"], "benchmark subgoals");
+}
+
 // One line on stderr, exit 2, naming the file and the field.
 void expect_refused(const CliResult& r, const std::string& file, const std::string& field, const std::string& why) {
   EXPECT_EQ(r.code, 2) << r.err;

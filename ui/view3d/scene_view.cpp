@@ -165,7 +165,7 @@ SceneView::SceneView(Document* doc, QWidget* parent) : QOpenGLWidget(parent), do
   connect(trees_button_, &QToolButton::toggled, this, &SceneView::setShowTrees);
   auto* fit = new QToolButton(this);
   fit->setText(tr("Fit"));
-  fit->setToolTip(tr("Fit the view to the scene (F)"));
+  fit->setToolTip(tr("Fit the view to the selected part and what is around it, or to the whole scene (F)"));
   connect(fit, &QToolButton::clicked, this, &SceneView::fitToScene);
   fit->setObjectName(QStringLiteral("fitButton"));
 
@@ -725,8 +725,12 @@ void SceneView::fitToScene() {
   if (!scene_) return;
   Eigen::AlignedBox3f box;
   const std::vector<QMatrix4x4> transforms = itemTransforms();
+  // A selected part is framed with room around it for its handles and its neighbours.
+  const int selected = doc_->selectedObject();
+  const float room = selected >= 0 ? 3.0f : 0.8f;
   for (size_t i = 0; i < items_.size(); ++i) {
     if (items_[i].owner == Owner::Floor) continue;
+    if (selected >= 0 && (items_[i].owner != Owner::Object || items_[i].index != selected)) continue;
     const auto& b = cpu_meshes_[items_[i].mesh].bounds;
     for (int k = 0; k < 8; ++k) {
       const QVector3D p = transforms[i].map(QVector3D(k & 1 ? b.max().x() : b.min().x(), k & 2 ? b.max().y() : b.min().y(),
@@ -737,7 +741,7 @@ void SceneView::fitToScene() {
   if (box.isEmpty()) return;
   const Eigen::Vector3f c = box.center();
   // The sphere around the box is loose for a flat scene; 0.8 of it frames the furniture well.
-  camera_.fit(QVector3D(c.x(), c.y(), c.z()), 0.5f * box.diagonal().norm() * 0.8f, float(width()) / std::max(1, height()));
+  camera_.fit(QVector3D(c.x(), c.y(), c.z()), 0.5f * box.diagonal().norm() * room, float(width()) / std::max(1, height()));
   update();
 }
 
