@@ -10,10 +10,11 @@ namespace demoplan {
 class InputError : public std::runtime_error {
 public:
   InputError(const std::string& file, const std::string& field, const std::string& reason)
-      : std::runtime_error(compose(file, field, reason)), file_(file), field_(field) {}
+      : std::runtime_error(compose(file, field, reason)), file_(file), field_(field), reason_(reason) {}
 
   const std::string& file() const { return file_; }
   const std::string& field() const { return field_; }
+  const std::string& reason() const { return reason_; }
 
 private:
   static std::string compose(const std::string& file, const std::string& field,
@@ -24,6 +25,7 @@ private:
   }
   std::string file_;
   std::string field_;
+  std::string reason_;
 };
 
 }  // namespace demoplan

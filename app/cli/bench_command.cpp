@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -43,6 +44,7 @@ struct BenchOptions {
   std::string planner = "guided";
   std::string compare;  // planners run alternately on the same runs, e.g. "guided,unguided"
   int jobs = 1;
+  std::string cell, demos;  // a cell and its demonstrations in place of tasks, robots and poses
   std::string out, ompl_log, data_dir;
   bool json = false;
 };
@@ -116,7 +118,30 @@ int run_bench(const BenchOptions& o) {
   std::map<std::tuple<std::string, std::string, int>, std::unique_ptr<Instance>> instances;
   std::vector<Run> runs;
   MeshCache meshes;  // every instance of a robot or task loads the same mesh files
-  for (const auto& task_name : split_list(o.tasks)) {
+  auto add_runs = [&](const std::string& task, const std::string& robot, int pose, double time_limit) {
+    // Planners alternate on each seed, so a slow phase of the machine hits them alike.
+    for (int seed : seeds)
+      for (const std::string& planner : planners) {
+        Run& r = runs.emplace_back();
+        r.planner = planner, r.task = task, r.robot = robot, r.pose = pose, r.seed = seed;
+        r.time_limit = time_limit;
+      }
+  };
+  if (!o.cell.empty()) {
+    // A cell: one instance per demonstration, named by its file.
+    if (o.demos.empty()) throw InputError(o.cell, "", "a cell needs demonstrations: give --demos");
+    const auto scene = load_cell_scene(o.cell, o.data_dir);
+    for (const auto& demo : split_list(o.demos)) {
+      const std::string name = std::filesystem::path(demo).stem().string();
+      if (instances.count({name, scene->robot.name, 0}))
+        throw InputError(demo, "--demos", "two demonstrations are named '" + name + "': rename one");
+      auto in = std::make_unique<Instance>();
+      in->problem = cell_task_instance(scene, demo).problem;
+      instances[{name, scene->robot.name, 0}] = std::move(in);
+      add_runs(name, scene->robot.name, 0, o.time_limit);
+    }
+  }
+  for (const auto& task_name : o.cell.empty() ? split_list(o.tasks) : std::vector<std::string>{}) {
     const BenchmarkTask task = load_benchmark_task(o.data_dir, task_name);
     for (const auto& robot : split_list(o.robots)) {
       const std::vector<int> available = benchmark_pose_ids(task, robot);
@@ -126,13 +151,7 @@ int run_bench(const BenchOptions& o) {
         auto in = std::make_unique<Instance>();
         in->problem = make_task_instance(task, scene, o.from).problem;
         instances[{task_name, robot, pose}] = std::move(in);
-        // Planners alternate on each seed, so a slow phase of the machine hits them alike.
-        for (int seed : seeds)
-          for (const std::string& planner : planners) {
-            Run& r = runs.emplace_back();
-            r.planner = planner, r.task = task_name, r.robot = robot, r.pose = pose, r.seed = seed;
-            r.time_limit = task.task_name == "waiter" ? o.waiter_time_limit : o.time_limit;
-          }
+        add_runs(task_name, robot, pose, task.task_name == "waiter" ? o.waiter_time_limit : o.time_limit);
       }
     }
   }
@@ -265,8 +284,10 @@ int run_bench(const BenchOptions& o) {
                      {"shortened_path_length_rad", r.shortened.length.robot}, {"grasps", r.raw.grasps}});
       if (!r.regrasp.empty()) all.back()["regrasp"] = r.regrasp;
     }
-    write_json_file_atomic(o.out, {{"format", "demoplan-bench"}, {"version", 1}, {"from", o.from}, {"handles", o.handles}, {"rows", rows},
-                                  {"comparisons", comparisons}, {"runs", all}});
+    nlohmann::json report{{"format", "demoplan-bench"}, {"version", 1}, {"rows", rows}, {"comparisons", comparisons}, {"runs", all}};
+    if (o.cell.empty()) report["from"] = o.from, report["handles"] = o.handles;
+    else report["cell"] = o.cell, report["demos"] = split_list(o.demos);
+    write_json_file_atomic(o.out, report);
   }
   if (!o.ompl_log.empty()) {
     const std::string stem = o.ompl_log.size() > 4 && o.ompl_log.substr(o.ompl_log.size() - 4) == ".log"
@@ -285,15 +306,19 @@ int run_bench(const BenchOptions& o) {
 Command register_bench_command(CLI::App& app) {
   auto opts = std::make_shared<BenchOptions>();
   CLI::App* sub = app.add_subcommand("bench", "run the benchmark protocol and validate every path");
-  sub->add_option("--tasks", opts->tasks, "comma-separated tasks")->capture_default_str();
-  sub->add_option("--robots", opts->robots, "comma-separated robots")->capture_default_str();
-  sub->add_option("--poses", opts->poses, "robot base pose ids, e.g. 0-4")->capture_default_str();
+  CLI::Option* tasks = sub->add_option("--tasks", opts->tasks, "comma-separated tasks")->capture_default_str();
+  CLI::Option* robots = sub->add_option("--robots", opts->robots, "comma-separated robots")->capture_default_str();
+  CLI::Option* poses = sub->add_option("--poses", opts->poses, "robot base pose ids, e.g. 0-4")->capture_default_str();
   sub->add_option("--seeds", opts->seeds, "seeds, e.g. 1-10")->capture_default_str();
   sub->add_option("--time-limit", opts->time_limit, "seconds per run")->capture_default_str();
   sub->add_option("--waiter-time-limit", opts->waiter_time_limit, "seconds per run of the waiter task (paper: 300)")
       ->capture_default_str();
-  add_from_option(*sub, opts->from);
-  add_handles_option(*sub, opts->handles);
+  CLI::Option* cell = sub->add_option("--cell", opts->cell, "a cell file (docs/cell.md) in place of --tasks, --robots and --poses")
+                          ->excludes(tasks)->excludes(robots)->excludes(poses);
+  sub->add_option("--demos", opts->demos, "with --cell: comma-separated demonstration files, one task instance each")
+      ->needs(cell);
+  add_from_option(*sub, opts->from)->excludes(cell);
+  add_handles_option(*sub, opts->handles)->excludes(cell);
   sub->add_option("--planner", opts->planner, "planner by name")
       ->check(CLI::IsMember(planner_names()))->capture_default_str();
   sub->add_option("--compare", opts->compare,

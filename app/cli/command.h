@@ -32,6 +32,7 @@ Command register_part_command(CLI::App& app);
 Command register_grasps_command(CLI::App& app);
 Command register_demo_command(CLI::App& app);
 Command register_board_command(CLI::App& app);
+Command register_markers_command(CLI::App& app);
 Command register_calibrate_command(CLI::App& app);
 Command register_synth_board_command(CLI::App& app);
 

@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
                                       register_inspect_command(app),
                                       register_figure_command(app), register_part_command(app),
                                       register_grasps_command(app), register_demo_command(app),
-                                      register_board_command(app), register_calibrate_command(app),
+                                      register_board_command(app), register_markers_command(app),
+                                      register_calibrate_command(app),
                                       register_synth_board_command(app)};
   try {
     app.parse(argc, argv);

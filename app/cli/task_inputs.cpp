@@ -82,6 +82,11 @@ std::shared_ptr<const Scene> load_cell_scene(const std::string& file, const std:
   return scene;
 }
 
+BenchmarkInstance cell_task_instance(std::shared_ptr<const Scene> scene, const std::string& demo_file) {
+  Demonstration demo = settle_on_supports(*scene, load_demonstration(demo_file));
+  return make_benchmark_instance(std::move(scene), std::move(demo));
+}
+
 BenchmarkInstance make_task_instance(const BenchmarkTask& task, std::shared_ptr<const Scene> scene, const std::string& from) {
   if (from != "tracks") return make_benchmark_instance(task, std::move(scene), from == "raw" ? PoseSource::Raw : PoseSource::Subgoals);
   perception::TracksDemonstration found = perception::demonstration_from_tracks(task, *scene);
@@ -94,10 +99,7 @@ LoadedTask load_task_inputs(const TaskInputs& in) {
   LoadedTask t;
   if (!in.cell.empty()) {
     if (in.demo.empty()) throw InputError(in.cell, "", "a cell needs a demonstration: give --demo");
-    auto scene = load_cell_scene(in.cell, in.data_dir);
-    // A demonstration from video rests its parts a millimetre off their supports.
-    Demonstration demo = settle_on_supports(*scene, load_demonstration(in.demo));
-    t.instance = make_benchmark_instance(std::move(scene), std::move(demo));
+    t.instance = cell_task_instance(load_cell_scene(in.cell, in.data_dir), in.demo);
     return t;
   }
   t.task = load_benchmark_task(in.data_dir, in.task);

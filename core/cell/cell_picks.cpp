@@ -61,6 +61,10 @@ RandomPickReport random_picks(const Scene& scene, const SceneState& start, int c
   const RestingPoseSampler sampler(scene);
   const CollisionChecker checker(scene);
   CollisionData data = checker.make_data();
+  if (scene.objects.empty()) {
+    r.failure = "the cell has no part to pick";
+    return r;
+  }
   if (sampler.empty()) {
     r.failure = "the cell has no support to put a part down on";
     return r;

@@ -247,7 +247,6 @@ Scene build_cell_scene(const Cell& cell, const CellSceneOptions& o, CellSceneRep
     scene.furniture.push_back(cell_furniture(cell, i, o, urdf_options, &supports));
     r.supports.push_back(supports);
   }
-  if (cell.parts.empty()) throw InputError(cell.file, "parts", "the cell has no part");
   const ParallelGripper gripper = parallel_gripper(scene.robot.model, scene.robot.srdf);
   for (size_t i = 0; i < cell.parts.size(); ++i) {
     CellPartReport part;

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "core/io/atomic_file.h"
 #include "core/io/one_line.h"
 
 namespace demoplan {
@@ -29,17 +30,7 @@ Json read_json_file(const std::string& path) {
 }
 
 void write_json_file_atomic(const std::string& path, const Json& value, int indent) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    if (!out) throw InputError(path, "", "cannot write file");
-    out << value.dump(indent) << '\n';
-    out.flush();
-    if (!out) throw InputError(path, "", "write failed");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw InputError(path, "", "cannot replace file: " + ec.message());
+  write_file_atomic(path, value.dump(indent) + '\n');
 }
 
 void JsonField::fail(const std::string& reason) const {

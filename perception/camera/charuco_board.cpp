@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/io/json_file.h"
 #include "perception/markers/marker_dictionary.h"
+#include "perception/printing/printed_page.h"
 
 namespace demoplan::perception {
 
@@ -122,51 +123,23 @@ PrintableBoard printable_board(const CharucoBoard& b, double dpi) {
   }
 
   // Caption: two lines of text, then the scale bar; the text shrinks to fit a narrow board.
-  const int font = cv::FONT_HERSHEY_SIMPLEX;
   const std::string line1 = "ChArUco " + std::to_string(b.squares_x) + " x " + std::to_string(b.squares_y) +
                             " squares, square " + mm(b.square_length) + " mm, marker " + mm(b.marker_length) + " mm, " +
                             b.dictionary + ", ids " + std::to_string(b.first_id) + "-" +
                             std::to_string(b.first_id + b.marker_count() - 1);
   const std::string line2 = "print at 100 %, check the scale bar: 50 mm";
-  int base = 0;
-  const cv::Size unit = cv::getTextSize(line1, font, 1.0, 1, &base);
-  double scale = 3.5 * px_per_mm / unit.height;  // 3.5 mm capitals
-  scale = std::min(scale, (board_w + margin) / double(unit.width));
-  const int thickness = std::max(1, int(std::lround(scale * 1.5)));
+  PageFont font = page_font(px_per_mm);
+  const int width = page_text_size(line1, font).width;
+  if (width > board_w + margin) font = page_font(px_per_mm, 3.5 * (board_w + margin) / width);
   const int top = margin + board_h;
-  cv::putText(p.image, line1, {margin, top + int(7 * px_per_mm)}, font, scale, cv::Scalar(0), thickness, cv::LINE_AA);
-  cv::putText(p.image, line2, {margin, top + int(13 * px_per_mm)}, font, scale, cv::Scalar(0), thickness, cv::LINE_AA);
-  // 50 mm bar, with a tick every 10 mm.
-  const int bar_y = top + int(17 * px_per_mm), bar_h = std::max(2, int(std::lround(2 * px_per_mm)));
-  const int bar_len = int(std::lround(50 * px_per_mm));
-  cv::rectangle(p.image, cv::Rect(margin, bar_y, bar_len, bar_h), cv::Scalar(0), cv::FILLED);
-  for (int t = 0; t <= 5; ++t) {
-    const int x = margin + int(std::lround(t * 10 * px_per_mm));
-    cv::rectangle(p.image, cv::Rect(std::min(x, margin + bar_len - thickness), bar_y - bar_h, thickness, bar_h), cv::Scalar(0), cv::FILLED);
-  }
-  cv::putText(p.image, "50 mm", {margin + bar_len + int(3 * px_per_mm), bar_y + bar_h}, font, scale, cv::Scalar(0),
-              thickness, cv::LINE_AA);
+  put_page_text(p.image, line1, {margin, top + int(7 * px_per_mm)}, font);
+  put_page_text(p.image, line2, {margin, top + int(13 * px_per_mm)}, font);
+  draw_scale_bar(p.image, {margin, top + int(15 * px_per_mm)}, px_per_mm, font);
   return p;
 }
 
 void save_printable_board(const std::string& png_path, const CharucoBoard& board, double dpi) {
-  const PrintableBoard p = printable_board(board, dpi);
-  // Atomic as every file we write: beside it under a temporary name (still .png: imwrite picks
-  // the encoder by extension), then renamed.
-  const std::string tmp = png_path + ".part.png";
-  bool ok = false;
-  std::error_code ec;
-  try {
-    ok = cv::imwrite(tmp, p.image);
-  } catch (const cv::Exception& e) {
-    std::filesystem::remove(tmp, ec);
-    throw InputError(png_path, "", std::string("cannot write the image: ") + e.err);
-  }
-  if (ok) std::filesystem::rename(tmp, png_path, ec);
-  if (!ok || ec) {
-    std::filesystem::remove(tmp, ec);
-    throw InputError(png_path, "", "cannot write the image");
-  }
+  save_png_at_dpi(png_path, printable_board(board, dpi).image, dpi);
 }
 
 }  // namespace demoplan::perception

@@ -33,6 +33,36 @@ std::vector<ObjectMarker> box_face_markers(const Eigen::AlignedBox3d& bounds, in
   return out;
 }
 
+int MarkerIds::take(int count) {
+  for (;; ++next_) {
+    bool clear = true;
+    for (int k = 0; k < count && clear; ++k) clear = !used_.count(next_ + k);
+    if (clear) break;
+  }
+  const int first = next_;
+  for (int k = 0; k < count; ++k) used_.insert(next_++);
+  return first;
+}
+
+std::vector<MarkedObject> cell_part_markers(const Cell& cell, const std::vector<std::string>& part_ids,
+                                            const std::vector<Eigen::AlignedBox3d>& bounds, MarkerIds* ids) {
+  std::set<int> used;
+  for (const auto& p : cell.parts)
+    for (const auto& m : p.markers) used.insert(m.id);
+  MarkerIds own(std::move(used));
+  MarkerIds& free_ids = ids ? (*ids = own) : own;
+  std::vector<MarkedObject> out;
+  for (size_t k = 0; k < part_ids.size(); ++k) {
+    MarkedObject& o = out.emplace_back();
+    o.id = part_ids[k];
+    const int c = cell.part_index(part_ids[k]);
+    if (c >= 0)
+      for (const auto& cm : cell.parts[static_cast<size_t>(c)].markers) o.markers.push_back({cm.id, cm.size, cm.pose});
+    if (o.markers.empty()) o.markers = box_face_markers(bounds[k], free_ids.take(kBoxFaceMarkers));
+  }
+  return out;
+}
+
 cv::Mat marker_image(const std::string& dictionary, int id, int cell_pixels) {
   const int cells = cells_with_border(dictionary);
   cv::Mat inner;

@@ -40,7 +40,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kDictionary = "DICT_4X4_100";
-constexpr int kMarkersPerPart = 6;
 
 struct Placed {
   RenderMesh mesh;
@@ -155,6 +154,12 @@ Assets scene_assets(const Scene& scene) {
   std::stable_sort(a.board_tops.begin(), a.board_tops.end(),
                    [](auto& x, auto& y) { return x.second.prod() > y.second.prod(); });
   return a;
+}
+
+std::vector<std::string> object_ids(const Scene& scene) {
+  std::vector<std::string> ids;
+  for (const auto& o : scene.objects) ids.push_back(o.id);
+  return ids;
 }
 
 // A large floor of tiles, centred below `centre`.
@@ -390,7 +395,7 @@ SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::stri
   DemoScript script = make_demo_script(task, bounds, o.time_scale);
   std::vector<std::vector<ObjectMarker>> part_markers;
   for (size_t k = 0; k < script.object_ids.size(); ++k)
-    part_markers.push_back(box_face_markers(bounds[k], kMarkersPerPart * static_cast<int>(k)));
+    part_markers.push_back(box_face_markers(bounds[k], kBoxFaceMarkers * static_cast<int>(k)));
   Camera camera = place_camera(script, assets.obstacles, part_markers);
   add_hand(script, camera.world_T_camera->translation());
   if (o.board && assets.table_top) camera.board = place_board(script, *assets.table_top, assets.table_size, camera, assets.obstacles, extrinsics_board(90));
@@ -447,36 +452,15 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
   for (const auto& p : assets.parts) bounds.push_back(p.bounds().cast<double>());
   DemoScript script = make_demo_script(truth, start.objects, bounds, scaled(30));
 
-  // The cell's own markers where a part has them; the others get one on each face, with ids no
-  // cell marker uses.
-  std::set<int> used;
-  for (const auto& p : cell.parts)
-    for (const auto& m : p.markers) used.insert(m.id);
-  int next_id = 0;
-  auto free_block = [&](int size) {
-    for (;; ++next_id) {
-      bool clear = true;
-      for (int k = 0; k < size; ++k) clear = clear && !used.count(next_id + k);
-      if (clear) break;
-    }
-    const int first = next_id;
-    for (int k = 0; k < size; ++k) used.insert(next_id++);
-    return first;
-  };
+  MarkerIds ids;
+  const std::vector<MarkedObject> marked = cell_part_markers(cell, object_ids(scene), bounds, &ids);
   std::vector<std::vector<ObjectMarker>> part_markers;
-  for (size_t k = 0; k < scene.objects.size(); ++k) {
-    const int c = cell.part_index(scene.objects[k].id);
-    std::vector<ObjectMarker> m;
-    if (c >= 0)
-      for (const auto& cm : cell.parts[c].markers) m.push_back({cm.id, cm.size, cm.pose});
-    if (m.empty()) m = box_face_markers(bounds[k], free_block(kMarkersPerPart));
-    part_markers.push_back(std::move(m));
-  }
+  for (const auto& o : marked) part_markers.push_back(o.markers);
   Camera camera = place_camera(script, assets.obstacles, part_markers);
   add_hand(script, camera.world_T_camera->translation());
   if (ro.board) {
     // The board's ids must not be read as a part's when both use the same dictionary.
-    const MarkerBoard board = extrinsics_board(cell.marker_dictionary == kDictionary ? free_block(6) : 90);
+    const MarkerBoard board = extrinsics_board(cell.marker_dictionary == kDictionary ? ids.take(6) : 90);
     // On the first top with a free spot the camera sees, else on a free floor tile near the
     // camera (tiles under furniture are left out: the obstacle test does not see into a box).
     auto tops = assets.board_tops;
@@ -512,7 +496,7 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
   markers.robot = scene.robot.name;
   markers.camera = "camera.json";
   markers.dictionary = cell.marker_dictionary;
-  for (size_t k = 0; k < scene.objects.size(); ++k) markers.objects.push_back({scene.objects[k].id, true, part_markers[k]});
+  markers.objects = marked;
   static_cast<SynthOutput&>(out) = render_demonstration(ro, out_dir, assets, script, bounds, camera, markers, truth, t0);
   if (out.cancelled) return out;
 
@@ -533,6 +517,22 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
   out.camera_truth = b.camera_truth;
   out.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
+}
+
+MarkerScene cell_marker_scene(const std::string& cell_file, const std::string& data_dir) {
+  const Cell cell = load_cell(cell_file);
+  CellSceneOptions scene_options;
+  scene_options.data_dir = data_dir;
+  scene_options.load_visual_meshes = true;
+  const Scene scene = build_cell_scene(cell, scene_options);
+  std::vector<Eigen::AlignedBox3d> bounds;
+  for (const auto& p : scene_assets(scene).parts) bounds.push_back(p.bounds().cast<double>());
+  MarkerScene markers;
+  markers.task = scene.name;
+  markers.robot = scene.robot.name;
+  markers.dictionary = cell.marker_dictionary;
+  markers.objects = cell_part_markers(cell, object_ids(scene), bounds);
+  return markers;
 }
 
 }  // namespace demoplan::perception

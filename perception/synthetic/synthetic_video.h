@@ -11,6 +11,8 @@
 #include <functional>
 #include <string>
 
+#include "perception/markers/marker_scene.h"
+
 namespace demoplan::perception {
 
 struct SynthOptions {
@@ -63,5 +65,9 @@ struct CellSynthOutput : SynthOutput {
 
 // Throws InputError for a bad cell or pick script.
 CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& options, const std::string& out_dir);
+
+// The markers on a cell's parts, as the synthetic video shows them and `extract` reads them (for
+// a printed sheet that matches the video): cell_part_markers over the parts' drawn meshes.
+MarkerScene cell_marker_scene(const std::string& cell_file, const std::string& data_dir);
 
 }  // namespace demoplan::perception

@@ -11,33 +11,16 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/app/cli_suite.h"
+#include "tests/support/box_stl.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using namespace demoplan::testing_support;
+using demoplan::test::write_box_stl;
 
 const std::string kCells = std::string(DEMOPLAN_DATA_DIR) + "/../cells";
-
-// A closed box of sx x sy x sz millimetres centred at the origin, as binary STL.
-void write_box_stl(const fs::path& file, float sx, float sy, float sz) {
-  std::ofstream out(file, std::ios::binary);
-  char header[80] = "test box, millimetres";
-  out.write(header, 80);
-  const std::uint32_t n = 12;
-  out.write(reinterpret_cast<const char*>(&n), 4);
-  auto v = [&](int i) { return std::array<float, 3>{(i & 1 ? 0.5f : -0.5f) * sx, (i & 2 ? 0.5f : -0.5f) * sy, (i & 4 ? 0.5f : -0.5f) * sz}; };
-  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& f : faces)
-    for (const auto& t : {std::array<int, 3>{f[0], f[1], f[2]}, std::array<int, 3>{f[0], f[2], f[3]}}) {
-      const float normal[3] = {0, 0, 0};
-      out.write(reinterpret_cast<const char*>(normal), 12);
-      for (int k : t) out.write(reinterpret_cast<const char*>(v(k).data()), 12);
-      const std::uint16_t attr = 0;
-      out.write(reinterpret_cast<const char*>(&attr), 2);
-    }
-}
 
 Json pose(double x, double y, double z, double yaw = 0.0) { return {{"xyz", {x, y, z}}, {"rpy", {0.0, 0.0, yaw}}}; }
 
@@ -128,6 +111,35 @@ TEST_F(CliCell, RandomPicksInTheWorkbenchCellArePlannedValid) {
   const CliResult r = run({"plan", "--cell", cell, "--demo", demo.string(), "--seed", "1", "--time-limit", "60", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(Json::parse(r.out)["valid"].get<bool>());
+}
+
+// bench runs the protocol on a cell: one task instance per demonstration, every path validated.
+TEST_F(CliCell, BenchOnACellRunsEveryDemonstration) {
+  const std::string cell = kCells + "/ur5_workbench.json";
+  std::vector<std::string> demos;
+  for (const char* seed : {"2", "3"}) {
+    demos.push_back((dir_ / ("bench_seed" + std::string(seed) + ".json")).string());
+    const CliResult d = run({"demo", "--cell", cell, "--picks", "2", "--seed", seed, "--out", demos.back()});
+    ASSERT_EQ(d.code, 0) << d.err;
+  }
+  const fs::path out = dir_ / "bench_cell.json";
+  const CliResult b = run({"bench", "--cell", cell, "--demos", demos[0] + "," + demos[1], "--seeds", "1-2", "--time-limit",
+                           "30", "--out", out.string(), "--json"});
+  ASSERT_EQ(b.code, 0) << b.err;
+  const Json rows = Json::parse(b.out)["rows"];
+  ASSERT_EQ(rows.size(), 4u);  // two demonstrations, each the planner's own path and shortened
+  for (const auto& row : rows) {
+    EXPECT_EQ(row["robot"], "ur5") << row;
+    EXPECT_EQ(row["runs"], 2) << row;
+    EXPECT_EQ(row["success_rate"], 1.0) << row;
+  }
+  EXPECT_EQ(rows[0]["task"], "bench_seed2");
+  const Json report = Json::parse(std::ifstream(out));
+  EXPECT_EQ(report["cell"], cell);
+  EXPECT_EQ(report["runs"].size(), 4u);
+  // Without demonstrations, or with a task beside the cell, it is refused.
+  EXPECT_EQ(run({"bench", "--cell", cell}).code, 2);
+  EXPECT_NE(run({"bench", "--cell", cell, "--demos", demos[0], "--tasks", "shelf_1"}).code, 0);
 }
 
 TEST_F(CliCell, ABenchmarkTaskIsPlannedWithGeneratedHandles) {

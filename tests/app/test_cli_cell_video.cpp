@@ -38,6 +38,35 @@ TEST_F(CliCellVideo, SynthesisedDemonstrationOfAnExampleCellIsExtractedAndPlanne
   ASSERT_TRUE(scene.contains("cell"));
   EXPECT_TRUE(fs::equivalent(d / scene["cell"].get<std::string>(), kCell));
 
+  // The markers a user prints for the cell are the ones the video shows: same parts, ids, sizes
+  // and places; the sheet of the scene holds every one of them.
+  const CliResult m = run({"markers", "--cell", kCell, "--out", out + "/cell_markers.png", "--write-scene",
+                           out + "/printed_scene.json", "--json"});
+  ASSERT_EQ(m.code, 0) << m.err;
+  const Json printed = Json::parse(std::ifstream(d / "printed_scene.json"));
+  EXPECT_TRUE(fs::equivalent(d / printed["cell"].get<std::string>(), kCell));
+  ASSERT_EQ(printed["objects"].size(), scene["objects"].size());
+  size_t markers = 0;
+  for (size_t k = 0; k < scene["objects"].size(); ++k) {
+    const Json& a = scene["objects"][k];
+    const Json& b = printed["objects"][k];
+    EXPECT_EQ(a["id"], b["id"]);
+    ASSERT_EQ(a["markers"].size(), b["markers"].size()) << a["id"];
+    for (size_t j = 0; j < a["markers"].size(); ++j, ++markers) {
+      EXPECT_EQ(a["markers"][j]["id"], b["markers"][j]["id"]);
+      EXPECT_NEAR(a["markers"][j]["size"].get<double>(), b["markers"][j]["size"].get<double>(), 1e-6);
+      for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(a["markers"][j]["object_T_marker"]["t"][i].get<double>(),
+                    b["markers"][j]["object_T_marker"]["t"][i].get<double>(), 1e-6);
+    }
+  }
+  EXPECT_EQ(Json::parse(m.out)["markers"].size(), markers);
+  const CliResult sheet = run({"markers", out + "/scene.json", "--out", out + "/sheet.png", "--dpi", "150", "--json"});
+  ASSERT_EQ(sheet.code, 0) << sheet.err;
+  const Json sj2 = Json::parse(sheet.out);
+  EXPECT_EQ(sj2["markers"].size(), markers);
+  for (const auto& page : sj2["pages"]) EXPECT_TRUE(fs::exists(page.get<std::string>())) << page;
+
   const CliResult c = run_plain({"calibrate", out + "/calibration.mp4", "--board", out + "/board.json", "--out",
                            out + "/cam.json", "--json"});
   ASSERT_EQ(c.code, 0) << c.err;
@@ -63,6 +92,23 @@ TEST_F(CliCellVideo, SynthesisedDemonstrationOfAnExampleCellIsExtractedAndPlanne
   const CliResult x2 = run({"export", out + "/p.json", "--cell", kCell, "--format", "csv", "--out", out + "/x.csv"});
   ASSERT_EQ(x2.code, 0) << x2.err;
   EXPECT_GT(fs::file_size(d / "x.csv"), 0u);
+}
+
+TEST_F(CliCellVideo, MarkerSheetsOfNothingOrTooLargeAreRefusedNamingTheField) {
+  const fs::path d = dir_ / "badmarkers";
+  fs::create_directories(d);
+  std::ofstream(d / "empty.json") << R"({"format": "demoplan-marker-scene", "version": 1, "dictionary": "DICT_4X4_100",
+    "objects": [{"id": "a", "markers": []}]})";
+  std::ofstream(d / "large.json") << R"({"format": "demoplan-marker-scene", "version": 1, "dictionary": "DICT_4X4_100",
+    "objects": [{"id": "a", "markers": [{"id": 3, "size": 0.5, "object_T_marker": {"t": [0, 0, 0], "q": [0, 0, 0, 1]}}]}]})";
+  const CliResult e = run({"markers", (d / "empty.json").string(), "--out", (d / "e.png").string()});
+  EXPECT_EQ(e.code, 2) << e.err;
+  EXPECT_NE(e.err.find("empty.json"), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("no part carries a marker"), std::string::npos) << e.err;
+  const CliResult l = run({"markers", (d / "large.json").string(), "--out", (d / "l.png").string(), "--paper", "a3"});
+  EXPECT_EQ(l.code, 2) << l.err;
+  EXPECT_NE(l.err.find("objects[0].markers[0].size"), std::string::npos) << l.err;
+  EXPECT_FALSE(fs::exists(d / "l.png"));
 }
 
 TEST_F(CliCellVideo, ExtractWithoutCameraPoseOrBoardIsRefusedNamingTheCameraFile) {

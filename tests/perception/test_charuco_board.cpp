@@ -2,16 +2,17 @@
 // DPI, and the board on it where its geometry says, as OpenCV finds it).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
 #include <opencv2/aruco/charuco.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "core/error.h"
 #include "perception/camera/charuco_board.h"
 #include "perception/markers/marker_dictionary.h"
+#include "perception/printing/printed_page.h"
+#include "tests/support/temp_folder.h"
 
 namespace fs = std::filesystem;
 using namespace demoplan;
@@ -21,16 +22,7 @@ namespace {
 
 class CharucoBoardFile : public ::testing::Test {
 protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("demoplan_charuco_board_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string file(const std::string& text) {
-    const std::string p = (dir_ / "board.json").string();
-    std::ofstream(p) << text;
-    return p;
-  }
+  std::string file(const std::string& text) { return dir_.write("board.json", text); }
   // The error loading `text` gives: its field, and its message.
   std::pair<std::string, std::string> error_of(const std::string& text) {
     try {
@@ -40,7 +32,7 @@ protected:
     }
     return {"", "no error"};
   }
-  fs::path dir_;
+  test::TempFolder dir_{"demoplan_charuco_board"};
 };
 
 std::string board_json(const std::string& squares_y, const std::string& extra = "") {
@@ -58,7 +50,7 @@ TEST_F(CharucoBoardFile, RoundTrip) {
   b.marker_length = 0.019;
   b.dictionary = "DICT_4X4_100";
   b.first_id = 20;
-  const std::string p = (dir_ / "b.json").string();
+  const std::string p = dir_.file("b.json");
   save_charuco_board(p, b);
   const CharucoBoard c = load_charuco_board(p);
   EXPECT_EQ(c.squares_x, 9);
@@ -81,7 +73,7 @@ TEST_F(CharucoBoardFile, EvenRowsAreRejected) {
   EXPECT_EQ(field, "squares_y");
   EXPECT_NE(what.find("odd"), std::string::npos) << what;
   EXPECT_NE(what.find("OpenCV 4.6"), std::string::npos) << what;
-  EXPECT_EQ(what.rfind((dir_ / "board.json").string(), 0), 0u) << what;
+  EXPECT_EQ(what.rfind(dir_.file("board.json"), 0), 0u) << what;
 }
 
 TEST_F(CharucoBoardFile, MissingAndBadFieldsAreNamed) {
@@ -133,4 +125,17 @@ TEST(CharucoPrintable, CornersWhereTheGeometrySays) {
     EXPECT_NEAR(corners[k].x, p.px_per_m_x * q.x + p.offset.x, 1.0) << corner_ids[k];
     EXPECT_NEAR(corners[k].y, p.px_per_m_y * q.y + p.offset.y, 1.0) << corner_ids[k];
   }
+}
+
+// The written page is the drawn one, and records its resolution so it prints at true scale.
+TEST(CharucoPrintable, SavedPageRecordsItsDpi) {
+  test::TempFolder dir("demoplan_charuco_page");
+  const CharucoBoard b;
+  save_printable_board(dir.file("board.png"), b, 200);
+  EXPECT_NEAR(png_dpi(dir.file("board.png")), 200, 0.02);  // PNG stores whole pixels per metre
+  const cv::Mat back = cv::imread(dir.file("board.png"), cv::IMREAD_GRAYSCALE);
+  const cv::Mat drawn = printable_board(b, 200).image;
+  ASSERT_EQ(back.size(), drawn.size());
+  EXPECT_EQ(cv::countNonZero(back != drawn), 0);
+  EXPECT_FALSE(fs::exists(dir.file("board.png.tmp")));
 }

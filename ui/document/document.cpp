@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/cell/cell_edits.h"
+#include "core/cell/cell_scene.h"
 #include "core/error.h"
 #include "core/project/new_project.h"
 #include "core/project/project_scene.h"
@@ -48,6 +50,34 @@ private:
   int sel_before_, sel_after_;
   int merge_id_;
   long merge_key_;
+};
+
+// A cell edit: the cell, the scene built from it and the demonstration that follows its parts,
+// before and after; undo and redo swap them without rebuilding anything.
+class CellCommand : public QUndoCommand {
+public:
+  struct State {
+    Cell cell;
+    std::shared_ptr<const Scene> scene;
+    Demonstration demo;
+  };
+  CellCommand(Document* doc, const QString& text, State before, State after, int merge_key)
+      : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)), merge_key_(merge_key) {}
+  void redo() override { doc_->applyCell(after_.cell, after_.scene, after_.demo); }
+  void undo() override { doc_->applyCell(before_.cell, before_.scene, before_.demo); }
+  int id() const override { return merge_key_ >= 0 ? kMergeCell : -1; }
+  bool mergeWith(const QUndoCommand* other) override {
+    auto* o = dynamic_cast<const CellCommand*>(other);
+    if (!o || o->merge_key_ != merge_key_) return false;
+    after_ = o->after_;
+    return true;
+  }
+  static constexpr int kMergeCell = 3;
+
+private:
+  Document* doc_;
+  State before_, after_;
+  int merge_key_;
 };
 
 constexpr int kMergePose = 1;
@@ -141,6 +171,9 @@ void Document::open(const QString& file) {
 
 void Document::install(Project p, std::shared_ptr<const Scene> scene, std::shared_ptr<const BenchmarkTask> task,
                        const QString& file) {
+  // The cell as the editor edits it (the scene was built from the same file a moment ago).
+  cell_.reset();
+  if (p.scene.is_cell()) cell_ = load_cell(p.scene.cell);
   scene_ref_ = p.scene;
   demonstration_ = p.demonstration;
   scene_ = std::move(scene);
@@ -242,6 +275,68 @@ void Document::setModified() {
   const bool was = isModified();
   extra_modified_ = true;
   if (!was) emit modifiedChanged(true);
+}
+
+// ------------------------------------------------------------------------------- cell
+
+bool Document::cellIsBundled() const {
+  if (!cell_) return false;
+  std::error_code ec;
+  const auto bundled = std::filesystem::weakly_canonical(std::filesystem::path(data_dir_) / ".." / "cells", ec);
+  const auto file = std::filesystem::weakly_canonical(cell_->file, ec);
+  const auto rel = file.lexically_relative(bundled);
+  return !rel.empty() && *rel.begin() != "..";
+}
+
+void Document::editCell(const Cell& after, const QString& text, int merge_key) {
+  if (!cell_) throw std::logic_error("editCell: the project is not on a cell");
+  if (cellIsBundled())
+    throw InputError(cell_->file, "", "a bundled example cell is not changed in place: save it under a name of your "
+                                      "own first (Save Cell As in the Cell panel)");
+  CellCommand::State next{after, nullptr, {}};
+  CellSceneOptions options;
+  options.data_dir = data_dir_;
+  options.load_visual_meshes = true;
+  options.mesh_cache = mesh_cache_.get();
+  next.scene = std::make_shared<const Scene>(build_cell_scene(after, options));
+  next.demo = demonstration_for_parts(demonstration_, *next.scene, cell_start_state(after, *next.scene));
+  save_cell(after.file, after);  // throws when it cannot be written: then nothing changed
+  undo_.push(new CellCommand(this, text, {*cell_, scene_, demonstration_}, std::move(next), merge_key));
+}
+
+void Document::applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, const Demonstration& demo) {
+  // The file is where the cell lives now (Save Cell As may have moved it since the edit).
+  const std::string file = cell_ ? cell_->file : cell.file;
+  cell_ = cell;
+  cell_->file = file;
+  scene_ = std::move(scene);
+  // Undo and redo write the file back, as the edit did; a failure leaves the project modified.
+  try {
+    save_cell(file, *cell_);
+  } catch (const InputError&) {
+    extra_modified_ = true;
+  }
+  demonstration_ = demo;
+  issues_ = validate(demonstration_);
+  if (selected_object_ >= static_cast<int>(demonstration_.object_ids.size())) selected_object_ = -1;
+  if (selected_event_ >= static_cast<int>(demonstration_.events.size())) selected_event_ = -1;
+  emit sceneChanged();
+  emit demonstrationChanged();
+  emit selectionChanged();
+  emit displayChanged();
+}
+
+void Document::saveCellAs(const QString& file) {
+  if (!cell_) throw std::logic_error("saveCellAs: the project is not on a cell");
+  const std::string path = QFileInfo(file).absoluteFilePath().toStdString();
+  Cell c = *cell_;
+  c.file = path;
+  if (c.name.empty() || cellIsBundled()) c.name = std::filesystem::path(path).stem().string();
+  save_cell(path, c);
+  cell_ = c;
+  scene_ref_.cell = path;
+  setModified();
+  emit cellFileChanged();
 }
 
 // ------------------------------------------------------------------------------ edits
@@ -419,6 +514,11 @@ Eigen::VectorXd Document::initialConfiguration() const {
 
 PoseList Document::demoPosesAt(double frame) const {
   if (!scene_) return {};
+  // Before the first event is there, the parts are where the scene starts them.
+  if (demonstration_.events.empty()) {
+    if (cell_) return cell_start_state(*cell_, *scene_).objects;
+    if (task_) return benchmark_start_state(*task_, *scene_).objects;
+  }
   return demo_poses_at_frame(*scene_, demonstration_, frame, initialConfiguration());
 }
 

@@ -10,7 +10,9 @@
 #include <QString>
 #include <QUndoStack>
 #include <memory>
+#include <optional>
 
+#include "core/cell/cell.h"
 #include "core/demo/benchmark_scene.h"
 #include "core/project/project.h"
 #include "ui/document/event_detection.h"
@@ -68,6 +70,21 @@ public:
   const BenchmarkTask* task() const { return task_.get(); }
   const SceneReference& sceneReference() const { return scene_ref_; }
 
+  // ---- the cell of a project on a cell file (null otherwise), edited in the Cell panel
+  const Cell* cell() const { return cell_ ? &*cell_ : nullptr; }
+  // A bundled example cell is not edited in place: saveCellAs first.
+  bool cellIsBundled() const;
+  // Replaces the cell as one undoable step (consecutive edits with the same merge_key >= 0, one
+  // field's spin steps, are one step): the scene is rebuilt, the demonstration follows the
+  // parts (demonstration_for_parts) and the cell file is written at once, so the file always
+  // holds what the editor shows (undo writes it back). Throws InputError and changes nothing
+  // when the scene cannot be built, a removed part has events, or the file cannot be written.
+  void editCell(const Cell& after, const QString& text, int merge_key = -1);
+  // Writes the cell to `file` (relative paths follow) and refers the project to it.
+  void saveCellAs(const QString& file);
+  // Used by the undo commands.
+  void applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, const Demonstration& demo);
+
   // ---- demonstration and edits (every edit goes through the undo stack)
   const Demonstration& demonstration() const { return demonstration_; }
   const std::vector<DemonstrationIssue>& issues() const { return issues_; }
@@ -117,6 +134,8 @@ signals:
   void modifiedChanged(bool modified);
   void fileChanged();
   void saved(const QString& file);
+  void sceneChanged();  // the same project on another scene: a cell edit, its undo or redo
+  void cellFileChanged();
 
 private:
   void loadScene(const SceneReference& ref, std::shared_ptr<const Scene>& scene,
@@ -136,6 +155,7 @@ private:
   bool extra_modified_ = false;
   std::shared_ptr<const Scene> scene_;
   std::shared_ptr<const BenchmarkTask> task_;
+  std::optional<Cell> cell_;
   std::vector<DemonstrationIssue> issues_;
   QUndoStack undo_;
   int selected_event_ = -1;

@@ -1,8 +1,5 @@
 #include "ui/document/extraction_runner.h"
 
-#include <QMetaObject>
-#include <QPointer>
-
 #include "core/error.h"
 #include "perception/camera/camera_model.h"
 #include "perception/extraction/extract_demonstration.h"
@@ -38,45 +35,21 @@ Demonstration reorder_objects(const Demonstration& demo, const std::vector<std::
   return out;
 }
 
-ExtractionRunner::ExtractionRunner(QObject* parent) : QObject(parent) {}
-
-ExtractionRunner::~ExtractionRunner() {
-  if (cancel_) cancel_->store(true);
-  for (auto& t : threads_)
-    if (t.joinable()) t.join();
-}
-
 bool ExtractionRunner::start(ExtractionJob job) {
-  if (running_) return false;
-  running_ = true;
-  const int generation = ++generation_;
-  cancel_ = std::make_shared<std::atomic<bool>>(false);
-  auto cancel = cancel_;
-  QPointer<ExtractionRunner> self(this);
-  emit started();
-  threads_.emplace_back([self, generation, cancel, job = std::move(job)] {
-    auto post = [&](auto f) {
-      if (cancel->load() || !self) return;
-      QMetaObject::invokeMethod(
-          self.data(),
-          [self, generation, f = std::move(f)]() mutable {
-            if (self && self->generation_ == generation && self->running_) f(*self);
-          },
-          Qt::QueuedConnection);
-    };
+  return run([this, job = std::move(job)](const Post& post, const std::atomic<bool>& cancel) {
     auto outcome = std::make_shared<ExtractionOutcome>();
     try {
       const perception::MarkerScene scene = perception::load_marker_scene(job.markers);
       const perception::Camera camera = perception::load_camera(job.camera);
       perception::ExtractionOptions options;
       options.camera_source = job.camera;
-      options.cancel = cancel.get();
+      options.cancel = &cancel;
       int last_percent = -1;
       options.progress = [&](int done, int total) {
         const int percent = total > 0 ? done * 100 / total : 0;
         if (percent == last_percent) return;
         last_percent = percent;
-        post([done, total](ExtractionRunner& r) { emit r.progress(done, total); });
+        post([this, done, total] { emit progress(done, total); });
       };
       perception::MarkerPoseTracker tracker(scene);
       const perception::ExtractionResult r = perception::extract_demonstration(job.video, camera, tracker, job.task, options);
@@ -90,20 +63,11 @@ bool ExtractionRunner::start(ExtractionJob job) {
     } catch (const std::exception& e) {
       outcome->error = e.what();
     }
-    post([outcome](ExtractionRunner& r) {
-      r.running_ = false;
-      emit r.finished(*outcome);
+    post([this, outcome] {
+      finish();
+      emit finished(*outcome);
     });
   });
-  return true;
-}
-
-void ExtractionRunner::cancel() {
-  if (!running_) return;
-  cancel_->store(true);
-  running_ = false;
-  ++generation_;
-  emit cancelled();
 }
 
 }  // namespace demoplan::ui

@@ -3,14 +3,11 @@
 // extract_demonstration) on a background thread, with progress and cancel. The result is a
 // demonstration in the scene's object order, ready to replace the current one as one undoable
 // edit.
-#include <QObject>
-#include <atomic>
-#include <memory>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "core/demo/demonstration.h"
+#include "ui/document/background_job.h"
 
 namespace demoplan::ui {
 
@@ -29,26 +26,15 @@ struct ExtractionOutcome {
   double seconds = 0.0;
 };
 
-class ExtractionRunner : public QObject {
+class ExtractionRunner : public BackgroundJob {
   Q_OBJECT
 public:
-  explicit ExtractionRunner(QObject* parent = nullptr);
-  ~ExtractionRunner() override;
+  using BackgroundJob::BackgroundJob;
   bool start(ExtractionJob job);
-  void cancel();
-  bool isRunning() const { return running_; }
 
 signals:
-  void started();
   void progress(int done, int total);
   void finished(const ExtractionOutcome& outcome);
-  void cancelled();
-
-private:
-  bool running_ = false;
-  int generation_ = 0;
-  std::shared_ptr<std::atomic<bool>> cancel_;
-  std::vector<std::thread> threads_;
 };
 
 // Puts an extracted demonstration's objects in `ids`' order; throws InputError naming the part

@@ -10,6 +10,11 @@ namespace demoplan::ui {
 PlanningController::PlanningController(Document* doc) : QObject(doc), doc_(doc), runner_(this) {
   connect(&runner_, &PlanRunner::finished, this, &PlanningController::onFinished);
   connect(&runner_, &PlanRunner::cancelled, this, &PlanningController::onCancelled);
+  // The interpolator holds the scene it was made with: remake it in the new one.
+  connect(doc_, &Document::sceneChanged, this, [this] {
+    interpolatePath();
+    emit resultChanged();
+  });
 }
 
 void PlanningController::setSettings(const PlannerSettings& s) {
@@ -29,13 +34,20 @@ bool PlanningController::start() {
     job.robot = doc_->sceneReference().robot;
     job.robot_pose = doc_->sceneReference().pose;
   }
+  planning_scene_ = job.scene.get();
   return runner_.start(std::move(job));
 }
 
 void PlanningController::setResult(std::shared_ptr<const PlanResultData> result) {
   result_ = std::move(result);
+  interpolatePath();
+}
+
+void PlanningController::interpolatePath() {
   interpolator_.reset();
-  if (result_ && result_->path) interpolator_ = std::make_unique<PathInterpolator>(doc_->scene(), *result_->path);
+  // A path stays drawable after a cell edit while it moves the same parts.
+  if (result_ && result_->path && result_->path->object_ids == doc_->demonstration().object_ids)
+    interpolator_ = std::make_unique<PathInterpolator>(doc_->scene(), *result_->path);
 }
 
 void PlanningController::onFinished(const PlanOutcome& o) {
@@ -57,6 +69,7 @@ void PlanningController::onFinished(const PlanOutcome& o) {
     if (report.solved()) r->path = report.path;
   }
   r->summary.demonstration_digest = demonstration_digest(doc_->demonstration());
+  r->planned_in = planning_scene_;
   setResult(r);
   doc_->setModified();
   emit resultChanged();
@@ -78,7 +91,8 @@ void PlanningController::onCancelled(const PlanSnapshot& last) {
 
 bool PlanningController::resultStale() const {
   return result_ && !result_->cancelled &&
-         result_->summary.demonstration_digest != demonstration_digest(doc_->demonstration());
+         (result_->summary.demonstration_digest != demonstration_digest(doc_->demonstration()) ||
+          result_->planned_in != doc_->sharedScene().get());
 }
 
 void PlanningController::clear() {
@@ -106,6 +120,7 @@ void PlanningController::load(const Project& project) {
       }
     }
   }
+  if (r) r->planned_in = doc_->sharedScene().get();
   setResult(r);
   emit settingsChanged();
   emit resultChanged();

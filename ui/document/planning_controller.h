@@ -27,6 +27,8 @@ struct PlanResultData {
   std::string shortcut_note;
   std::string regrasp;  // a regrasp the planner added to the demonstration (regrasp.h)
   bool cancelled = false;
+  // The scene it was planned in, for identity only (a cell edit makes another scene).
+  const Scene* planned_in = nullptr;
 };
 
 class PlanningController : public QObject {
@@ -42,7 +44,7 @@ public:
   // False when the demonstration has issues or a job runs.
   bool start();
   const PlanResultData* result() const { return result_.get(); }
-  // The demonstration changed since the result was planned.
+  // The demonstration or the scene (a cell edit) changed since the result was planned.
   bool resultStale() const;
   const PathInterpolator* interpolator() const { return interpolator_.get(); }
   void clear();
@@ -64,8 +66,10 @@ private:
   void onFinished(const PlanOutcome& outcome);
   void onCancelled(const PlanSnapshot& last);
   void setResult(std::shared_ptr<const PlanResultData> result);
+  void interpolatePath();
 
   Document* doc_;
+  const Scene* planning_scene_ = nullptr;  // of the running job
   PlannerSettings settings_;
   PlanRunner runner_;
   std::shared_ptr<const PlanResultData> result_;

@@ -12,6 +12,7 @@
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QInputDialog>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -31,9 +32,12 @@
 #include <QToolBar>
 #include <QUndoView>
 
+#include "core/cell/cell_edits.h"
 #include "core/demo/benchmark_scene.h"
 #include "core/error.h"
 #include "ui/view3d/scene_view.h"
+#include "ui/widgets/calibration_dialog.h"
+#include "ui/widgets/cell_panel.h"
 #include "ui/widgets/export_dialog.h"
 #include "ui/widgets/part_tracks_panel.h"
 #include "ui/widgets/planner_panel.h"
@@ -162,6 +166,8 @@ void MainWindow::createDocks() {
   result_dock_ = addDock(tr("Result"), QStringLiteral("ResultDock"), result_, Qt::BottomDockWidgetArea);
   part_tracks_ = new PartTracksPanel(doc_, this);
   tracks_dock_ = addDock(tr("Part Tracks"), QStringLiteral("PartTracksDock"), part_tracks_, Qt::BottomDockWidgetArea);
+  cell_panel_ = new CellPanel(doc_, this);
+  cell_dock_ = addDock(tr("Cell"), QStringLiteral("CellDock"), cell_panel_, Qt::LeftDockWidgetArea);
   history_ = new QUndoView(doc_->undoStack(), this);
   history_->setEmptyLabel(tr("<opened>"));
   history_dock_ = addDock(tr("History"), QStringLiteral("HistoryDock"), history_, Qt::BottomDockWidgetArea);
@@ -171,7 +177,16 @@ void MainWindow::createDocks() {
   splitDockWidget(inspector_dock_, planner_dock_, Qt::Horizontal);
   tabifyDockWidget(planner_dock_, result_dock_);
   tabifyDockWidget(result_dock_, history_dock_);
+  tabifyDockWidget(video_dock_, cell_dock_);
   planner_dock_->raise();
+  video_dock_->raise();
+  // The cell editor is there on a project on a cell, in front until a video is opened.
+  connect(doc_, &Document::projectLoaded, this, [this] {
+    const bool cell = doc_->cell() != nullptr;
+    cell_dock_->setVisible(cell);
+    if (cell && doc_->media()->videoFile().empty()) cell_dock_->raise();
+  });
+  cell_dock_->hide();
   resizeDocks({video_dock_}, {470}, Qt::Horizontal);
   resizeDocks({inspector_dock_, planner_dock_}, {330, 950}, Qt::Horizontal);
   resizeDocks({timeline_dock_, inspector_dock_}, {118, 236}, Qt::Vertical);
@@ -202,6 +217,9 @@ void MainWindow::createActions() {
     if (!f.isEmpty()) newFromCell(f);
   });
   new_cell->setShortcut(QKeySequence(tr("Ctrl+Shift+N")));
+  auto* make_cell = file->addAction(tr("New &Cell…"), this, &MainWindow::newCellDialog);
+  make_cell->setStatusTip(tr("Set up your own cell: choose the robot, then add furniture and parts from their files "
+                             "in the Cell panel"));
   new_cell->setStatusTip(tr("Start a project on your own cell: robot, furniture and parts from files (docs/cell.md)"));
   auto* open = file->addAction(st->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open…"), this, [this] {
     if (!maybeSave()) return;
@@ -222,6 +240,12 @@ void MainWindow::createActions() {
   auto* video = file->addAction(tr("Open &Video…"), this, [this] { openVideo(); });
   video->setStatusTip(tr("Open the recording of the demonstration (or drop it on the window)"));
   file->addAction(tr("Open &Camera Calibration…"), this, [this] { openCamera(); });
+  auto* calibrate = file->addAction(tr("Ca&librate Camera…"), this, [this] {
+    CalibrationDialog dialog(doc_, this);
+    dialog.exec();
+  });
+  calibrate->setStatusTip(tr("The camera's intrinsics from a video of a printed ChArUco board: progress, the error of "
+                             "every view, then use it for this project"));
   file->addAction(tr("Open &Marker Scene…"), this, [this] {
     if (!doc_->hasProject()) return;
     const QString f = QFileDialog::getOpenFileName(this, tr("Open marker scene"), QFileInfo(doc_->filePath()).absolutePath(),
@@ -291,7 +315,8 @@ void MainWindow::createActions() {
   auto* path_view = view_menu_->addAction(tr("Show the Planned &Path"), this, [this] { doc_->setPlaybackT(doc_->playbackT()); });
   path_view->setStatusTip(tr("Show the robot and the parts along the planned path"));
   view_menu_->addSeparator();
-  for (QDockWidget* d : {video_dock_, timeline_dock_, tracks_dock_, inspector_dock_, planner_dock_, result_dock_, history_dock_})
+  for (QDockWidget* d : {video_dock_, cell_dock_, timeline_dock_, tracks_dock_, inspector_dock_, planner_dock_, result_dock_,
+                         history_dock_})
     view_menu_->addAction(d->toggleViewAction());
   view_menu_->addSeparator();
   view_menu_->addAction(tr("&Reset Layout"), this, [this] { restoreState(default_state_); });
@@ -564,6 +589,39 @@ bool MainWindow::newFromCell(const QString& cell_file) {
                               "and extract its events (step 1).")
                                .arg(QFileInfo(cell_file).fileName()),
                            15000);
+  return true;
+}
+
+void MainWindow::newCellDialog() {
+  if (!maybeSave()) return;
+  QStringList robots;
+  for (const auto& r : list_benchmark_robots(options_.data_dir)) robots << QString::fromStdString(r);
+  bool ok = false;
+  const QString robot = QInputDialog::getItem(this, tr("New cell"), tr("The robot of the cell"), robots,
+                                              std::max(0, static_cast<int>(robots.indexOf(QStringLiteral("ur5")))), false, &ok);
+  if (!ok) return;
+  QSettings settings;
+  const QString file = QFileDialog::getSaveFileName(this, tr("Save the new cell as"),
+                                                    settings.value("lastDir").toString() + QStringLiteral("/my_cell.json"),
+                                                    tr("Cell files (*.json)"));
+  if (file.isEmpty()) return;
+  newCell(file, robot);
+}
+
+bool MainWindow::newCell(const QString& cell_file, const QString& robot) {
+  try {
+    save_cell(cell_file.toStdString(), starter_cell(cell_file.toStdString(), robot.toStdString(), options_.data_dir));
+  } catch (const InputError& e) {
+    reportError(tr("Cannot create the cell"), QString::fromStdString(e.what()));
+    return false;
+  }
+  if (!newFromCell(cell_file)) return false;
+  cell_dock_->show();
+  cell_dock_->raise();
+  statusBar()->showMessage(tr("A new cell: %1 at the origin and a table. Add parts from their mesh files in the Cell "
+                              "panel; place everything by typing millimetres and degrees.")
+                               .arg(robot),
+                           20000);
   return true;
 }
 

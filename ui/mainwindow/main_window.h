@@ -22,6 +22,7 @@ class QDropEvent;
 
 namespace demoplan::ui {
 
+class CellPanel;
 class ExportDialog;
 class PartTracksPanel;
 class PlannerPanel;
@@ -68,6 +69,10 @@ public:
   bool openSample();
   bool newFromBenchmark(const QString& task, const QString& robot, int pose);
   bool newFromCell(const QString& cell_file);
+  // A starter cell (starter_cell) with `robot`, written to `cell_file`, and a project on it.
+  bool newCell(const QString& cell_file, const QString& robot);
+  CellPanel* cellPanel() const { return cell_panel_; }
+  QDockWidget* cellDock() const { return cell_dock_; }
   bool save();
   bool saveAs(const QString& file = QString());
   bool openVideo(const QString& file = QString());
@@ -108,6 +113,7 @@ private:
   void reportError(const QString& title, const QString& message);
   bool maybeSave();
   void newFromBenchmarkDialog();
+  void newCellDialog();
   void removeAutosave();
   // Replaces the open project by what `make` loads into the document (the old project's
   // autosave dropped first, a wait cursor meanwhile); a failure is reported under
@@ -127,13 +133,14 @@ private:
   TimelinePanel* timeline_ = nullptr;
   PartTracksPanel* part_tracks_ = nullptr;
   PoseEditor* pose_editor_ = nullptr;
+  CellPanel* cell_panel_ = nullptr;
   PlannerPanel* planner_ = nullptr;
   ResultPanel* result_ = nullptr;
   QUndoView* history_ = nullptr;
   StepBar* step_bar_ = nullptr;
   QDockWidget *video_dock_ = nullptr, *timeline_dock_ = nullptr, *inspector_dock_ = nullptr, *planner_dock_ = nullptr,
               *result_dock_ = nullptr, *history_dock_ = nullptr,
-              *tracks_dock_ = nullptr;
+              *tracks_dock_ = nullptr, *cell_dock_ = nullptr;
   QMenu* recent_menu_ = nullptr;
   QMenu* view_menu_ = nullptr;
   QLabel* frame_label_ = nullptr;

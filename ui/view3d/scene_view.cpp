@@ -186,6 +186,13 @@ SceneView::SceneView(Document* doc, QWidget* parent) : QOpenGLWidget(parent), do
     updateHud();
     update();
   });
+  // A cell edit: the same view on the rebuilt scene (no refit, the trees of the old scene kept).
+  connect(doc_, &Document::sceneChanged, this, [this] {
+    rebuildScene();
+    rebuildPathTrace();
+    updateHud();
+    update();
+  });
   connect(doc_, &Document::displayChanged, this, redraw);
   connect(doc_, &Document::selectionChanged, this, redraw);
   connect(doc_, &Document::demonstrationChanged, this, redraw);

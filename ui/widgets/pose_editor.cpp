@@ -1,24 +1,17 @@
 #include "ui/widgets/pose_editor.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
-#include <QGridLayout>
-#include <QGroupBox>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QVBoxLayout>
-#include <cmath>
 
 #include "ui/document/demo_poses.h"
+#include "ui/widgets/pose_fields.h"
 #include "ui/widgets/style.h"
 
 namespace demoplan::ui {
-
-namespace {
-constexpr double kDeg = 180.0 / M_PI;
-}
 
 PoseEditor::PoseEditor(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
   auto* layout = new QVBoxLayout(this);
@@ -48,41 +41,12 @@ PoseEditor::PoseEditor(Document* doc, QWidget* parent) : QWidget(parent), doc_(d
   form->addRow(tr("Part"), object_);
   layout->addLayout(form);
 
-  auto* box = new QGroupBox(tr("Pose in the world"), this);
-  auto* grid = new QGridLayout(box);
-  const char* names[6] = {"X", "Y", "Z", QT_TR_NOOP("Roll"), QT_TR_NOOP("Pitch"), QT_TR_NOOP("Yaw")};
-  const char* tips[6] = {QT_TR_NOOP("Position along the world x axis, millimetres"),
-                         QT_TR_NOOP("Position along the world y axis, millimetres"),
-                         QT_TR_NOOP("Height above the floor, millimetres"),
-                         QT_TR_NOOP("Rotation about x, degrees (applied first)"),
-                         QT_TR_NOOP("Rotation about y, degrees"),
-                         QT_TR_NOOP("Rotation about z, degrees (applied last)")};
-  for (int i = 0; i < 6; ++i) {
-    auto* s = new QDoubleSpinBox(box);
-    s->setKeyboardTracking(false);
-    s->setAccelerated(true);
-    if (i < 3) {
-      s->setRange(-20000, 20000);
-      s->setDecimals(1);
-      s->setSingleStep(1.0);
-      s->setSuffix(QStringLiteral(" mm"));
-    } else {
-      s->setRange(-360, 360);
-      s->setDecimals(2);
-      s->setSingleStep(1.0);
-      s->setSuffix(QStringLiteral("°"));
-      s->setWrapping(true);
-    }
-    s->setToolTip(tr(tips[i]));
-    s->setAccessibleName(tr(names[i]));
-    fields_[i] = s;
-    grid->addWidget(new QLabel(tr(names[i]), box), i % 3, (i / 3) * 2);
-    grid->addWidget(s, i % 3, (i / 3) * 2 + 1);
-    connect(s, &QDoubleSpinBox::valueChanged, this, [this, i] { onFieldEdited(i); });
-  }
-  grid->setColumnStretch(1, 1);
-  grid->setColumnStretch(3, 1);
-  layout->addWidget(box);
+  pose_ = new PoseFields(tr("Pose in the world"), this);
+  connect(pose_, &PoseFields::edited, this, [this](const Pose& T, int field) {
+    const int ev = doc_->editEvent();
+    if (!refreshing_ && ev >= 0 && shown_object_ >= 0) doc_->setObjectPose(ev, shown_object_, T, /*merge_key=*/field);
+  });
+  layout->addWidget(pose_);
   note_ = new QLabel(this);
   note_->setWordWrap(true);
   QFont f = note_->font();
@@ -112,6 +76,8 @@ PoseEditor::PoseEditor(Document* doc, QWidget* parent) : QWidget(parent), doc_(d
   refresh();
 }
 
+QDoubleSpinBox* PoseEditor::field(int i) const { return pose_->field(i); }
+
 void PoseEditor::refresh() {
   refreshing_ = true;
   const bool has = doc_->hasProject();
@@ -126,7 +92,7 @@ void PoseEditor::refresh() {
     object_->setCurrentIndex(obj);
   }
   const bool editable = ev >= 0 && obj >= 0;
-  for (auto* f : fields_) f->setEnabled(editable);
+  pose_->setEditable(editable);
   frame_->setEnabled(ev >= 0);
   confidence_->setEnabled(ev >= 0);
   if (ev < 0) {
@@ -152,18 +118,7 @@ void PoseEditor::refresh() {
                                                                    : tr(" <i>(the first event)</i>")));
   if (obj >= 0) {
     const Pose T = world_pose_at_event(doc_->scene(), d, ev, obj, doc_->initialConfiguration());
-    const Eigen::Vector3d rpy = rpyFromRotation(T.linear());
-    std::array<double, 6> v = {T.translation().x() * 1000, T.translation().y() * 1000, T.translation().z() * 1000,
-                               rpy.x() * kDeg, rpy.y() * kDeg, rpy.z() * kDeg};
-    // Keep the exact values while the pose is the one the fields show (rounding drift).
-    for (int i = 0; i < 6; ++i) {
-      const bool same = ev == shown_event_ && obj == shown_object_ &&
-                        std::abs(v[i] - exact_[i]) < (i < 3 ? 0.05 : 0.005);
-      if (!same) exact_[i] = v[i];
-      QSignalBlocker b(fields_[i]);
-      fields_[i]->setValue(exact_[i]);
-      shown_[i] = fields_[i]->value();
-    }
+    pose_->setPose(T, ev == shown_event_ && obj == shown_object_);
     shown_event_ = ev;
     shown_object_ = obj;
     const std::vector<size_t> rest = rest_events(d, ev, obj);
@@ -181,19 +136,6 @@ void PoseEditor::refresh() {
     note_->setText(note);
   }
   refreshing_ = false;
-}
-
-void PoseEditor::onFieldEdited(int i) {
-  if (refreshing_) return;
-  const int ev = doc_->editEvent();
-  const int obj = shown_object_;
-  if (ev < 0 || obj < 0) return;
-  // The change the operator made to the displayed (rounded) value, applied to the exact one.
-  exact_[i] += fields_[i]->value() - shown_[i];
-  shown_[i] = fields_[i]->value();
-  Pose T = pose_from_xyz_rpy(Eigen::Vector3d(exact_[0], exact_[1], exact_[2]) / 1000.0,
-                             Eigen::Vector3d(exact_[3], exact_[4], exact_[5]) / kDeg);
-  doc_->setObjectPose(ev, obj, T, /*merge_key=*/i);
 }
 
 }  // namespace demoplan::ui

@@ -4,7 +4,6 @@
 // applies to every event of the part's rest (it cannot move while nobody holds it) and goes
 // through the undo stack; consecutive steps of one field merge into one undo step.
 #include <QWidget>
-#include <array>
 
 #include "ui/document/document.h"
 
@@ -14,31 +13,31 @@ class QLabel;
 class QSpinBox;
 
 namespace demoplan::ui {
+class PoseFields;
+}
+
+namespace demoplan::ui {
 
 class PoseEditor : public QWidget {
   Q_OBJECT
 public:
   explicit PoseEditor(Document* doc, QWidget* parent = nullptr);
   // 0..2: x, y, z in mm; 3..5: roll, pitch, yaw in degrees.
-  QDoubleSpinBox* field(int i) const { return fields_[i]; }
+  QDoubleSpinBox* field(int i) const;
   QComboBox* objectBox() const { return object_; }
   QSpinBox* frameBox() const { return frame_; }
   QDoubleSpinBox* confidenceBox() const { return confidence_; }
 
 private:
   void refresh();
-  void onFieldEdited(int i);
 
   Document* doc_;
   QLabel* event_label_;
   QComboBox* object_;
   QSpinBox* frame_;
   QDoubleSpinBox* confidence_;
-  std::array<QDoubleSpinBox*, 6> fields_{};
+  PoseFields* pose_;
   QLabel* note_;
-  // The exact values behind the rounded fields, so editing one field does not nudge the others.
-  std::array<double, 6> exact_{};
-  std::array<double, 6> shown_{};  // what the fields displayed when last refreshed
   int shown_event_ = -1, shown_object_ = -1;
   bool refreshing_ = false;
 };

@@ -1,0 +1,130 @@
+#include "core/cell/cell_edits.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <random>
+
+#include "core/demo/benchmark_scene.h"
+#include "core/error.h"
+#include "core/model/mesh.h"
+#include "core/scene/collision_checker.h"
+#include "core/scene/resting_pose_sampler.h"
+
+namespace demoplan {
+
+namespace {
+
+bool name_taken(const Cell& cell, const std::string& name) {
+  for (const auto& f : cell.furniture)
+    if (f.name == name) return true;
+  return cell.part_index(name) >= 0;
+}
+
+}  // namespace
+
+std::string unique_cell_name(const Cell& cell, const std::string& base) {
+  if (!name_taken(cell, base)) return base;
+  for (int k = 2;; ++k)
+    if (const std::string n = base + " " + std::to_string(k); !name_taken(cell, n)) return n;
+}
+
+Cell starter_cell(const std::string& file, const std::string& robot, const std::string& data_dir) {
+  const BenchmarkRobot r = load_benchmark_robot(data_dir, robot);  // throws for an unknown robot
+  Cell c;
+  c.file = std::filesystem::absolute(file).lexically_normal().string();
+  c.name = std::filesystem::path(file).stem().string();
+  c.robot.bundled = robot;
+  c.robot.mobile = !r.fixed_base;
+  const double top = 0.75;
+  if (r.fixed_base) {
+    CellFurniture pedestal;
+    pedestal.name = "pedestal";
+    pedestal.box = {0.3, 0.3, top};
+    pedestal.pose.translation() = Eigen::Vector3d(0, 0, top / 2);
+    pedestal.auto_supports = false;  // nothing is put down on the robot's pedestal
+    c.furniture.push_back(pedestal);
+    c.robot.base.translation() = Eigen::Vector3d(0, 0, top);
+  }
+  CellFurniture table;
+  table.name = "table";
+  table.box = {0.8, 1.2, top};
+  table.pose.translation() = Eigen::Vector3d(r.fixed_base ? 0.65 : 1.2, 0, top / 2);
+  c.furniture.push_back(table);
+  return c;
+}
+
+double guess_unit_scale(const std::string& mesh_file) {
+  const auto mesh = load_mesh(mesh_file);
+  return mesh->bounds().sizes().maxCoeff() > 3.0f ? 0.001 : 1.0;
+}
+
+int add_part_from_mesh(Cell& cell, const std::string& mesh_file, double scale, const CellSceneOptions& options) {
+  if (!(scale > 0)) throw InputError(mesh_file, "scale", "must be > 0");
+  load_mesh(mesh_file);  // a missing or empty file is named as such, before anything else
+  Cell with = cell;
+  CellPart part;
+  part.name = unique_cell_name(cell, std::filesystem::path(mesh_file).stem().string());
+  part.mesh = std::filesystem::absolute(mesh_file).lexically_normal().string();
+  part.scale = scale;
+  part.pose.translation() = Eigen::Vector3d(0, 0, -100);  // out of the way until put down
+  with.parts.push_back(part);
+  const int index = static_cast<int>(with.parts.size()) - 1;
+  Scene scene;
+  try {
+    scene = build_cell_scene(with, options);
+  } catch (const InputError& e) {
+    // The cell file is not the user's concern here: the part's mesh is.
+    throw InputError(mesh_file, e.field().rfind("parts[", 0) == 0 ? e.field().substr(e.field().find('.') + 1) : e.field(),
+                     e.reason());
+  }
+  const RestingPoseSampler sampler(scene);
+  if (sampler.empty()) throw InputError(mesh_file, "", "the cell has no support to put the part down on: add a table");
+  const CollisionChecker checker(scene);
+  CollisionData data = checker.make_data();
+  SceneState state = cell_start_state(with, scene);
+  std::mt19937_64 rng(1);
+  for (int draw = 0; draw < 300; ++draw) {
+    const std::optional<Pose> at = sampler.sample(index, rng);
+    if (!at) continue;
+    state.objects[static_cast<size_t>(index)] = *at;
+    if (checker.in_collision(state, data)) continue;
+    with.parts.back().pose = *at;
+    cell = std::move(with);
+    return index;
+  }
+  throw InputError(mesh_file, "", "no support has a free spot for the part: make room or add a table");
+}
+
+Demonstration demonstration_for_parts(const Demonstration& demo, const Scene& scene, const SceneState& start) {
+  Demonstration d = demo;
+  d.object_ids.clear();
+  for (const auto& o : scene.objects) d.object_ids.push_back(o.id);
+  std::vector<int> old_of(d.object_ids.size(), -1);  // new object index -> old one, -1 new part
+  for (size_t k = 0; k < d.object_ids.size(); ++k) old_of[k] = demo.object_index(d.object_ids[k]);
+  for (size_t old = 0; old < demo.object_ids.size(); ++old)
+    if (std::find(old_of.begin(), old_of.end(), static_cast<int>(old)) == old_of.end())
+      for (const auto& e : demo.events)
+        if (e.object == static_cast<int>(old))
+          throw InputError(demo.object_ids[old], "events",
+                           "the demonstration grasps or releases it (frame " + std::to_string(e.frame) +
+                               "): delete its events first");
+  for (size_t i = 0; i < d.events.size(); ++i) {
+    const ContactEvent& before = demo.events[i];
+    ContactEvent& e = d.events[i];
+    e.object = static_cast<int>(std::find(old_of.begin(), old_of.end(), before.object) - old_of.begin());
+    e.poses.clear();
+    e.pose_frames.clear();
+    for (size_t k = 0; k < old_of.size(); ++k) {
+      const bool kept = old_of[k] >= 0 && static_cast<size_t>(old_of[k]) < before.poses.size();
+      e.poses.push_back(kept ? before.poses[static_cast<size_t>(old_of[k])] : start.objects[k]);
+      if (!before.pose_frames.empty()) e.pose_frames.push_back(kept ? before.pose_frame(old_of[k]) : "");
+    }
+  }
+  std::erase_if(d.doubts, [&](const DetectionDoubt& x) {
+    return std::find(old_of.begin(), old_of.end(), x.object) == old_of.end();
+  });
+  for (auto& x : d.doubts) x.object = static_cast<int>(std::find(old_of.begin(), old_of.end(), x.object) - old_of.begin());
+  return d;
+}
+
+}  // namespace demoplan

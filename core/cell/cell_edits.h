@@ -1,0 +1,36 @@
+#pragma once
+// The edits the cell editor makes, Qt-free so tests and the CLI can make them too: a starter
+// cell, names that do not clash, a part from a mesh file put down on a free spot of a support,
+// and the demonstration kept in step with the parts.
+#include <string>
+
+#include "core/cell/cell.h"
+#include "core/cell/cell_scene.h"
+#include "core/demo/demonstration.h"
+
+namespace demoplan {
+
+// `base` when no robot, furniture or part of `cell` is named so, else "base 2", "base 3", ...
+std::string unique_cell_name(const Cell& cell, const std::string& base);
+
+// A new cell to be written to `file`: the bundled `robot` at the origin on a 0.75 m pedestal
+// (a mobile robot on the floor) and a 1.2 x 0.8 x 0.75 m table in front of it, supports found on
+// its top; no part yet.
+Cell starter_cell(const std::string& file, const std::string& robot, const std::string& data_dir);
+
+// Metres per unit of a mesh file, guessed from its size: CAD files of shop-floor parts are in
+// millimetres (an extent above 3 units), scanned ones in metres.
+double guess_unit_scale(const std::string& mesh_file);
+
+// Adds a part made from `mesh_file` (metres per unit `scale`), named after the file, resting on
+// a free spot of a support where the robot and the other parts leave room (the same draw for
+// the same cell). Returns its index. Throws InputError naming the file when the mesh cannot be
+// read, the part cannot rest or be grasped, or no support has room for it.
+int add_part_from_mesh(Cell& cell, const std::string& mesh_file, double scale, const CellSceneOptions& options = {});
+
+// The demonstration for `scene`'s parts after parts were added or removed: a part kept keeps
+// its events and poses, a new part rests where `start` puts it at every event. Throws
+// InputError naming the part when a removed part has events (delete them first).
+Demonstration demonstration_for_parts(const Demonstration& demo, const Scene& scene, const SceneState& start);
+
+}  // namespace demoplan

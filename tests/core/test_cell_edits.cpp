@@ -1,0 +1,145 @@
+// The edits of the cell editor, without the GUI: a starter cell that loads collision-free for a
+// fixed and a mobile robot, names that do not clash, a part from an STL put down on a free spot
+// of the table (the same spot for the same cell, clear of the parts already there), and the
+// demonstration kept in step when parts come and go.
+#include <gtest/gtest.h>
+
+#include "core/cell/cell_edits.h"
+#include "core/error.h"
+#include "core/scene/collision_checker.h"
+#include "tests/support/box_stl.h"
+#include "tests/support/temp_folder.h"
+
+namespace demoplan {
+namespace {
+
+bool start_collides(const Cell& cell) {
+  const Scene scene = build_cell_scene(cell, {.data_dir = DEMOPLAN_DATA_DIR});
+  const CollisionChecker checker(scene);
+  CollisionData data = checker.make_data();
+  return checker.in_collision(cell_start_state(cell, scene), data);
+}
+
+TEST(CellEdits, StarterCellsLoadCollisionFree) {
+  test::TempFolder dir("demoplan_cell_edits");
+  for (const char* robot : {"panda", "ur5", "kmr_iiwa"}) {
+    const Cell cell = starter_cell(dir.file(std::string(robot) + ".json"), robot, DEMOPLAN_DATA_DIR);
+    EXPECT_EQ(cell.robot.bundled, robot);
+    EXPECT_EQ(cell.robot.mobile, std::string(robot) == "kmr_iiwa");
+    EXPECT_EQ(cell.furniture.size(), cell.robot.mobile ? 1u : 2u) << robot;
+    EXPECT_FALSE(start_collides(cell)) << robot;
+    save_cell(cell.file, cell);
+    EXPECT_EQ(load_cell(cell.file).furniture.size(), cell.furniture.size());
+  }
+  EXPECT_THROW(starter_cell(dir.file("x.json"), "no_such_robot", DEMOPLAN_DATA_DIR), InputError);
+}
+
+TEST(CellEdits, NamesDoNotClash) {
+  Cell cell = starter_cell("/tmp/c.json", "ur5", DEMOPLAN_DATA_DIR);
+  EXPECT_EQ(unique_cell_name(cell, "box"), "box");
+  EXPECT_EQ(unique_cell_name(cell, "table"), "table 2");
+  cell.furniture.back().name = "table 2";
+  cell.furniture.push_back(cell.furniture.back());
+  cell.furniture.back().name = "table";
+  EXPECT_EQ(unique_cell_name(cell, "table"), "table 3");
+}
+
+TEST(CellEdits, PartsArePutDownOnFreeSpotsTheSameWayEachTime) {
+  test::TempFolder dir("demoplan_cell_edits");
+  test::write_box_stl(dir.path() / "block.stl", 40, 30, 20);
+  EXPECT_EQ(guess_unit_scale(dir.file("block.stl")), 0.001);
+  Cell cell = starter_cell(dir.file("cell.json"), "ur5", DEMOPLAN_DATA_DIR);
+  const CellSceneOptions options{.data_dir = DEMOPLAN_DATA_DIR};
+  Cell again = cell;
+  EXPECT_EQ(add_part_from_mesh(cell, dir.file("block.stl"), 0.001, options), 0);
+  EXPECT_EQ(add_part_from_mesh(again, dir.file("block.stl"), 0.001, options), 0);
+  EXPECT_TRUE(cell.parts[0].pose.isApprox(again.parts[0].pose, 1e-12));
+  EXPECT_EQ(add_part_from_mesh(cell, dir.file("block.stl"), 0.001, options), 1);
+  EXPECT_EQ(cell.parts[1].name, "block 2");
+  EXPECT_FALSE(start_collides(cell));
+  // On the table top, 10, 15 or 20 mm up depending on the face it rests on.
+  for (const auto& p : cell.parts) {
+    const double lift = p.pose.translation().z() - 0.75;
+    EXPECT_TRUE(std::abs(lift - 0.01) < 1e-3 || std::abs(lift - 0.015) < 1e-3 || std::abs(lift - 0.02) < 1e-3) << lift;
+  }
+  // A missing file and a part too wide for the gripper are named as such; the cell is unchanged.
+  const Cell before = cell;
+  try {
+    add_part_from_mesh(cell, dir.file("none.stl"), 0.001, options);
+    ADD_FAILURE() << "a missing mesh was added";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), dir.file("none.stl"));
+  }
+  test::write_box_stl(dir.path() / "wide.stl", 300, 300, 300);
+  try {
+    add_part_from_mesh(cell, dir.file("wide.stl"), 0.001, options);
+    ADD_FAILURE() << "a 300 mm cube was added";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), dir.file("wide.stl"));
+    EXPECT_EQ(e.field(), "handles");
+    EXPECT_NE(e.reason().find("too wide"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(cell.parts.size(), before.parts.size());
+}
+
+TEST(CellEdits, TheDemonstrationFollowsTheParts) {
+  test::TempFolder dir("demoplan_cell_edits");
+  test::write_box_stl(dir.path() / "a.stl", 40, 30, 20);
+  test::write_box_stl(dir.path() / "b.stl", 50, 30, 20);
+  Cell cell = starter_cell(dir.file("cell.json"), "ur5", DEMOPLAN_DATA_DIR);
+  add_part_from_mesh(cell, dir.file("a.stl"), 0.001, {.data_dir = DEMOPLAN_DATA_DIR});
+  add_part_from_mesh(cell, dir.file("b.stl"), 0.001, {.data_dir = DEMOPLAN_DATA_DIR});
+  const Scene two = build_cell_scene(cell, {.data_dir = DEMOPLAN_DATA_DIR});
+  const SceneState start = cell_start_state(cell, two);
+  Demonstration demo;
+  demo.object_ids = {"a", "b"};
+  Pose moved = start.objects[1];
+  moved.translation().y() += 0.1;
+  demo.events.push_back({10, 1, EventType::Grasp, 1.0, start.objects, {}});
+  demo.events.push_back({40, 1, EventType::Release, 1.0, {start.objects[0], moved}, {}});
+  demo.doubts.push_back({0, 0, 5, "a doubt on a"});
+  demo.doubts.push_back({1, 20, 30, "a doubt on b"});
+
+  // Part a removed: b's events and poses follow it to index 0; a's doubt goes with a.
+  Cell without_a = cell;
+  without_a.parts.erase(without_a.parts.begin());
+  const Scene one = build_cell_scene(without_a, {.data_dir = DEMOPLAN_DATA_DIR});
+  const Demonstration d1 = demonstration_for_parts(demo, one, cell_start_state(without_a, one));
+  EXPECT_EQ(d1.object_ids, std::vector<std::string>{"b"});
+  ASSERT_EQ(d1.events.size(), 2u);
+  EXPECT_EQ(d1.events[1].object, 0);
+  ASSERT_EQ(d1.events[1].poses.size(), 1u);
+  EXPECT_TRUE(d1.events[1].poses[0].isApprox(moved));
+  ASSERT_EQ(d1.doubts.size(), 1u);
+  EXPECT_EQ(d1.doubts[0].object, 0);
+
+  // Part b removed while it has events: refused, naming it.
+  Cell without_b = cell;
+  without_b.parts.pop_back();
+  const Scene other = build_cell_scene(without_b, {.data_dir = DEMOPLAN_DATA_DIR});
+  try {
+    demonstration_for_parts(demo, other, cell_start_state(without_b, other));
+    ADD_FAILURE() << "a part with events was dropped";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "b");
+    EXPECT_NE(std::string(e.what()).find("delete its events first"), std::string::npos) << e.what();
+  }
+
+  // A new part rests where the cell puts it at every event.
+  test::write_box_stl(dir.path() / "c.stl", 40, 40, 20);
+  Cell with_c = cell;
+  add_part_from_mesh(with_c, dir.file("c.stl"), 0.001, {.data_dir = DEMOPLAN_DATA_DIR});
+  const Scene three = build_cell_scene(with_c, {.data_dir = DEMOPLAN_DATA_DIR});
+  const SceneState start3 = cell_start_state(with_c, three);
+  const Demonstration d3 = demonstration_for_parts(demo, three, start3);
+  EXPECT_EQ(d3.object_ids, (std::vector<std::string>{"a", "b", "c"}));
+  for (const auto& e : d3.events) {
+    ASSERT_EQ(e.poses.size(), 3u);
+    EXPECT_TRUE(e.poses[2].isApprox(start3.objects[2]));
+  }
+  EXPECT_TRUE(d3.events[1].poses[1].isApprox(moved));
+  EXPECT_TRUE(validate(d3).empty());
+}
+
+}  // namespace
+}  // namespace demoplan

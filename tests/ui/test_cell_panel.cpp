@@ -1,0 +1,173 @@
+// The cell editor as an operator uses it: a new cell (robot and table), a box added, a part
+// added from an STL file (put down on the table, its grasps generated), moved by typing, a
+// handle deleted and the handles generated again, a part removed; every change one undo step,
+// written to the cell file at once and written back on undo. A bundled example is not changed
+// in place; a part too wide for the gripper and a part with events are refused with the reason.
+#include <QLabel>
+#include <QListWidget>
+#include <QTemporaryDir>
+#include <QTreeWidget>
+#include <QUndoStack>
+#include <QtTest>
+#include <fstream>
+#include <sstream>
+
+#include "core/cell/cell_edits.h"
+#include "ui/document/document.h"
+#include "ui/widgets/cell_panel.h"
+#include "ui_test_support.h"
+#include "tests/support/box_stl.h"
+
+using namespace demoplan;
+using namespace demoplan::ui;
+
+namespace {
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+class TestCellPanel : public QObject {
+  Q_OBJECT
+  QTemporaryDir dir_;
+  std::unique_ptr<Document> doc_;
+  std::unique_ptr<CellPanel> panel_;
+
+  std::string path(const char* name) const { return dir_.filePath(QString::fromLatin1(name)).toStdString(); }
+
+private slots:
+  void init() {
+    QVERIFY(dir_.isValid());
+    const std::string cell = path("my_cell.json");
+    save_cell(cell, starter_cell(cell, "ur5", ui::test::dataDir().toStdString()));
+    doc_ = std::make_unique<Document>(ui::test::dataDir().toStdString());
+    doc_->newFromCell(cell);
+    panel_ = std::make_unique<CellPanel>(doc_.get());
+    panel_->show();
+  }
+  void cleanup() {
+    panel_.reset();
+    doc_.reset();
+  }
+
+  void furnitureIsAddedUndoneAndRedoneInTheFile() {
+    QVERIFY(doc_->cell());
+    QCOMPARE(doc_->cell()->furniture.size(), size_t(2));  // pedestal and table
+    QCOMPARE(panel_->tree()->topLevelItemCount(), 3);
+    const int steps = doc_->undoStack()->count();
+    QVERIFY2(panel_->addFurniture(CellFurniture::Kind::Box), qPrintable(panel_->lastError()));
+    QCOMPARE(doc_->undoStack()->count(), steps + 1);
+    QCOMPARE(doc_->cell()->furniture.size(), size_t(3));
+    QCOMPARE(doc_->scene().furniture.size(), size_t(3));
+    QCOMPARE(load_cell(doc_->cell()->file).furniture.size(), size_t(3));
+    QCOMPARE(panel_->selection().kind, CellPanel::Kind::Furniture);
+    doc_->undoStack()->undo();
+    QCOMPARE(doc_->cell()->furniture.size(), size_t(2));
+    QCOMPARE(load_cell(doc_->cell()->file).furniture.size(), size_t(2));
+    doc_->undoStack()->redo();
+    QCOMPARE(load_cell(doc_->cell()->file).furniture.size(), size_t(3));
+  }
+
+  void aPartFromAnStlRestsOnTheTableWithGrasps() {
+    const std::string stl = path("block.stl");
+    demoplan::test::write_box_stl(stl, 40, 30, 20);  // millimetres
+    QCOMPARE(guess_unit_scale(stl), 0.001);
+    QVERIFY2(panel_->addPart(QString::fromStdString(stl), 0.001), qPrintable(panel_->lastError()));
+    const Cell& cell = *doc_->cell();
+    QCOMPARE(cell.parts.size(), size_t(1));
+    QCOMPARE(cell.parts[0].name, std::string("block"));
+    // On the table top (0.75 m) on one of its faces: its centre 10, 15 or 20 mm above it.
+    const Eigen::Vector3d at = cell.parts[0].pose.translation();
+    const double lift = at.z() - 0.75;
+    QVERIFY2(std::abs(lift - 0.010) < 1e-3 || std::abs(lift - 0.015) < 1e-3 || std::abs(lift - 0.020) < 1e-3,
+             qPrintable(QString::number(lift)));
+    QVERIFY(std::abs(at.x() - 0.65) < 0.4 && std::abs(at.y()) < 0.6);
+    // Before any event the 3D view shows it where the cell puts it.
+    QVERIFY(doc_->displayState().objects.at(0).isApprox(cell.parts[0].pose));
+    // The demonstration follows the parts; the handles are listed.
+    QCOMPARE(doc_->demonstration().object_ids, std::vector<std::string>{"block"});
+    QCOMPARE(panel_->selection().kind, CellPanel::Kind::Part);
+    const int handles = panel_->handleList()->count();
+    QVERIFY(handles > 0);
+    QVERIFY(panel_->infoLabel()->text().contains(QStringLiteral("generated")));
+
+    // Typing moves it: steps of one field are one undo step; the file follows.
+    const int steps = doc_->undoStack()->count();
+    Pose moved = cell.parts[0].pose;
+    moved.translation().x() += 0.05;
+    QVERIFY(panel_->setSelectedPose(moved, 0));
+    moved.translation().x() += 0.05;
+    QVERIFY(panel_->setSelectedPose(moved, 0));
+    QCOMPARE(doc_->undoStack()->count(), steps + 1);
+    QVERIFY((load_cell(doc_->cell()->file).parts[0].pose.translation() - moved.translation()).norm() < 1e-9);
+
+    // One handle deleted: the rest kept as they are; generated again: all back.
+    QVERIFY(panel_->deleteHandle(0, 0));
+    QCOMPARE(panel_->handleList()->count(), handles - 1);
+    QVERIFY(!doc_->cell()->parts[0].auto_handles);
+    QCOMPARE(load_cell(doc_->cell()->file).parts[0].handles.size(), size_t(handles - 1));
+    QVERIFY(panel_->regenerateHandles(0));
+    QCOMPARE(panel_->handleList()->count(), handles);
+
+    // Removed, and back with undo.
+    panel_->select(CellPanel::Kind::Part, 0);
+    QVERIFY(panel_->removeSelected());
+    QVERIFY(doc_->cell()->parts.empty());
+    QVERIFY(doc_->demonstration().object_ids.empty());
+    doc_->undoStack()->undo();
+    QCOMPARE(doc_->cell()->parts.size(), size_t(1));
+    QCOMPARE(doc_->demonstration().object_ids.size(), size_t(1));
+  }
+
+  void aPartWithEventsOrTooWideIsRefusedWithTheReason() {
+    const std::string wide = path("wide.stl");
+    demoplan::test::write_box_stl(wide, 300, 300, 300);
+    const std::string before = readFile(doc_->cell()->file);
+    QVERIFY(!panel_->addPart(QString::fromStdString(wide), 0.001));
+    QVERIFY2(panel_->lastError().contains(QStringLiteral("wide.stl")), qPrintable(panel_->lastError()));
+    QVERIFY2(panel_->lastError().contains(QStringLiteral("too wide")), qPrintable(panel_->lastError()));
+    QVERIFY(doc_->cell()->parts.empty());
+    QCOMPARE(readFile(doc_->cell()->file), before);
+
+    const std::string stl = path("block.stl");
+    demoplan::test::write_box_stl(stl, 40, 30, 20);
+    QVERIFY(panel_->addPart(QString::fromStdString(stl), 0.001));
+    doc_->addEvent(10, 0, EventType::Grasp);
+    panel_->select(CellPanel::Kind::Part, 0);
+    QVERIFY(!panel_->removeSelected());
+    QVERIFY2(panel_->lastError().contains(QStringLiteral("delete its events first")), qPrintable(panel_->lastError()));
+    QCOMPARE(doc_->cell()->parts.size(), size_t(1));
+  }
+
+  void aBundledExampleIsSavedUnderTheUsersNameBeforeItChanges() {
+    const std::string bundled = ui::test::dataDir().toStdString() + "/../cells/ur5_workbench.json";
+    doc_->newFromCell(bundled);
+    QVERIFY(doc_->cellIsBundled());
+    const std::string before = readFile(bundled);
+    panel_->select(CellPanel::Kind::Furniture, 0);
+    Pose p = doc_->cell()->furniture[0].pose;
+    p.translation().y() += 0.1;
+    QVERIFY(!panel_->setSelectedPose(p));
+    QVERIFY2(panel_->lastError().contains(QStringLiteral("Save Cell As")), qPrintable(panel_->lastError()));
+    const std::string mine = path("workbench_copy.json");
+    doc_->saveCellAs(QString::fromStdString(mine));
+    QVERIFY(!doc_->cellIsBundled());
+    QCOMPARE(doc_->sceneReference().cell, mine);
+    QVERIFY(doc_->isModified());
+    QVERIFY2(panel_->setSelectedPose(p), qPrintable(panel_->lastError()));
+    QCOMPARE(readFile(bundled), before);
+    // The copy finds the bundled meshes from where it is.
+    const Cell copy = load_cell(mine);
+    QVERIFY(std::abs(copy.furniture[0].pose.translation().y() - p.translation().y()) < 1e-9);
+    QVERIFY(std::filesystem::exists(copy.parts[0].mesh));
+  }
+};
+
+DEMOPLAN_UI_TEST_MAIN(TestCellPanel)
+
+#include "test_cell_panel.moc"

@@ -1,0 +1,449 @@
+#include "ui/widgets/cell_panel.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenu>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
+#include <QVBoxLayout>
+#include <filesystem>
+
+#include "core/cell/cell_edits.h"
+#include "core/error.h"
+#include "ui/widgets/pose_fields.h"
+
+namespace demoplan::ui {
+
+namespace {
+
+constexpr int kKindRole = Qt::UserRole, kIndexRole = Qt::UserRole + 1;
+
+QString q(const std::string& s) { return QString::fromStdString(s); }
+
+QString fileName(const std::string& path) { return q(std::filesystem::path(path).filename().string()); }
+
+// Units a mesh file may be in, metres per unit.
+const std::pair<const char*, double> kUnits[] = {
+    {QT_TRANSLATE_NOOP("CellPanel", "millimetres"), 0.001},
+    {QT_TRANSLATE_NOOP("CellPanel", "centimetres"), 0.01},
+    {QT_TRANSLATE_NOOP("CellPanel", "metres"), 1.0},
+    {QT_TRANSLATE_NOOP("CellPanel", "inches"), 0.0254}};
+
+const char* kMeshFilter = QT_TRANSLATE_NOOP("CellPanel", "Meshes (*.stl *.obj *.ply *.dae *.gltf *.glb *.STL *.OBJ *.PLY)");
+
+QString shapeText(const CellFurniture& f) {
+  switch (f.kind) {
+    case CellFurniture::Kind::Box:
+      return CellPanel::tr("box %1 x %2 x %3 m").arg(f.box.x()).arg(f.box.y()).arg(f.box.z());
+    case CellFurniture::Kind::Cylinder:
+      return CellPanel::tr("cylinder, radius %1 m, length %2 m").arg(f.radius).arg(f.length);
+    case CellFurniture::Kind::Mesh:
+      return CellPanel::tr("mesh %1 (scale %2)").arg(fileName(f.file)).arg(f.scale);
+    case CellFurniture::Kind::Urdf:
+      return CellPanel::tr("URDF %1").arg(fileName(f.file));
+  }
+  return {};
+}
+
+}  // namespace
+
+CellPanel::CellPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(6, 6, 6, 6);
+  file_label_ = new QLabel(this);
+  file_label_->setWordWrap(true);
+  layout->addWidget(file_label_);
+
+  tree_ = new QTreeWidget(this);
+  tree_->setHeaderHidden(true);
+  tree_->setRootIsDecorated(true);
+  tree_->setObjectName(QStringLiteral("cellTree"));
+  tree_->setMinimumHeight(150);
+  layout->addWidget(tree_, 3);
+
+  auto* buttons = new QHBoxLayout;
+  auto* add_part = new QPushButton(tr("Add Part…"), this);
+  add_part->setToolTip(tr("A part from its mesh file (STL, OBJ, PLY, DAE, glTF): put down on a free spot of a "
+                          "support, its resting placements and grasps computed"));
+  connect(add_part, &QPushButton::clicked, this, &CellPanel::addPartFromDialog);
+  auto* add_furniture = new QToolButton(this);
+  add_furniture->setText(tr("Add Furniture"));
+  add_furniture->setPopupMode(QToolButton::InstantPopup);
+  auto* menu = new QMenu(add_furniture);
+  menu->addAction(tr("Box"), this, [this] { addFurniture(CellFurniture::Kind::Box); });
+  menu->addAction(tr("Cylinder"), this, [this] { addFurniture(CellFurniture::Kind::Cylinder); });
+  menu->addAction(tr("Mesh File…"), this, &CellPanel::addMeshFurnitureFromDialog);
+  add_furniture->setMenu(menu);
+  remove_ = new QPushButton(tr("Remove"), this);
+  remove_->setToolTip(tr("Remove the selected furniture or part from the cell"));
+  connect(remove_, &QPushButton::clicked, this, &CellPanel::removeSelected);
+  auto* save_as = new QPushButton(tr("Save Cell As…"), this);
+  save_as->setToolTip(tr("Write the cell to a file of your own and use that file from now on"));
+  connect(save_as, &QPushButton::clicked, this, &CellPanel::saveCellAs);
+  buttons->addWidget(add_part);
+  buttons->addWidget(add_furniture);
+  buttons->addWidget(remove_);
+  buttons->addStretch(1);
+  buttons->addWidget(save_as);
+  layout->addLayout(buttons);
+
+  info_ = new QLabel(this);
+  info_->setWordWrap(true);
+  layout->addWidget(info_);
+  pose_ = new PoseFields(tr("Pose in the world"), this);
+  layout->addWidget(pose_);
+  connect(pose_, &PoseFields::edited, this, [this](const Pose& T, int field) {
+    if (!refreshing_) setSelectedPose(T, field);
+  });
+
+  handles_ = new QListWidget(this);
+  handles_->setToolTip(tr("The part's grasp handles, as the planner uses them"));
+  handles_->setMinimumHeight(60);
+  layout->addWidget(handles_, 1);
+  auto* handle_buttons = new QHBoxLayout;
+  delete_handle_ = new QPushButton(tr("Delete Handle"), this);
+  delete_handle_->setToolTip(tr("The planner will not grasp the part there (the other handles are kept as they are)"));
+  connect(delete_handle_, &QPushButton::clicked, this, [this] {
+    if (selection_.kind == Kind::Part && handles_->currentRow() >= 0) deleteHandle(selection_.index, handles_->currentRow());
+  });
+  regenerate_ = new QPushButton(tr("Generate Handles"), this);
+  regenerate_->setToolTip(tr("Generate the part's handles again from its mesh for the robot's gripper"));
+  connect(regenerate_, &QPushButton::clicked, this, [this] {
+    if (selection_.kind == Kind::Part) regenerateHandles(selection_.index);
+  });
+  handle_buttons->addWidget(delete_handle_);
+  handle_buttons->addWidget(regenerate_);
+  handle_buttons->addStretch(1);
+  layout->addLayout(handle_buttons);
+
+  message_ = new QLabel(this);
+  message_->setWordWrap(true);
+  message_->setObjectName(QStringLiteral("cellMessage"));
+  layout->addWidget(message_);
+
+  connect(tree_, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
+    if (refreshing_ || !item) return;
+    selection_ = {static_cast<Kind>(item->data(0, kKindRole).toInt()), item->data(0, kIndexRole).toInt()};
+    if (selection_.kind == Kind::Part && doc_->cell())
+      doc_->selectObject(doc_->scene().object_index(doc_->cell()->parts[static_cast<size_t>(selection_.index)].name));
+    showSelection();
+  });
+  connect(doc_, &Document::projectLoaded, this, [this] {
+    selection_ = {};
+    message_->clear();
+    refresh();
+  });
+  connect(doc_, &Document::sceneChanged, this, &CellPanel::refresh);
+  connect(doc_, &Document::cellFileChanged, this, &CellPanel::refresh);
+  connect(doc_, &Document::selectionChanged, this, [this] {
+    // A part clicked in the 3D view is selected here too.
+    const int o = doc_->selectedObject();
+    if (!doc_->cell() || o < 0 || o >= static_cast<int>(doc_->scene().objects.size())) return;
+    const int part = doc_->cell()->part_index(doc_->scene().objects[static_cast<size_t>(o)].id);
+    if (part >= 0 && !(selection_.kind == Kind::Part && selection_.index == part)) select(Kind::Part, part);
+  });
+  refresh();
+}
+
+void CellPanel::refresh() {
+  refreshing_ = true;
+  tree_->clear();
+  const Cell* cell = doc_->cell();
+  setEnabled(cell != nullptr);
+  if (!cell) {
+    file_label_->setText(doc_->hasProject() ? tr("This project is on a benchmark task: it has no cell to edit. "
+                                                 "File > New Cell starts one.")
+                                            : tr("No project"));
+    selection_ = {};
+    refreshing_ = false;
+    showSelection();
+    return;
+  }
+  file_label_->setText(tr("<b>%1</b> — %2%3")
+                           .arg(q(cell->name), fileName(cell->file),
+                                doc_->cellIsBundled() ? tr(" <i>(a bundled example: Save Cell As to change it)</i>")
+                                                      : QString()));
+  auto add = [&](QTreeWidgetItem* parent, const QString& text, Kind kind, int index) {
+    auto* item = parent ? new QTreeWidgetItem(parent) : new QTreeWidgetItem(tree_);
+    item->setText(0, text);
+    item->setData(0, kKindRole, static_cast<int>(kind));
+    item->setData(0, kIndexRole, index);
+    return item;
+  };
+  const QString robot = cell->robot.bundled.empty() ? fileName(cell->robot.urdf) : q(cell->robot.bundled);
+  QTreeWidgetItem* current = add(nullptr, tr("Robot: %1").arg(robot), Kind::Robot, 0);
+  if (selection_.kind != Kind::Robot) current = nullptr;
+  auto* furniture = add(nullptr, tr("Furniture (%1)").arg(cell->furniture.size()), Kind::None, -1);
+  for (size_t i = 0; i < cell->furniture.size(); ++i) {
+    auto* item = add(furniture, q(cell->furniture[i].name), Kind::Furniture, static_cast<int>(i));
+    if (selection_.kind == Kind::Furniture && selection_.index == static_cast<int>(i)) current = item;
+  }
+  auto* parts = add(nullptr, tr("Parts (%1)").arg(cell->parts.size()), Kind::None, -1);
+  for (size_t i = 0; i < cell->parts.size(); ++i) {
+    auto* item = add(parts, q(cell->parts[i].name), Kind::Part, static_cast<int>(i));
+    if (selection_.kind == Kind::Part && selection_.index == static_cast<int>(i)) current = item;
+  }
+  tree_->expandAll();
+  if (!current) selection_ = {};
+  tree_->setCurrentItem(current);
+  refreshing_ = false;
+  showSelection();
+}
+
+void CellPanel::select(Kind kind, int index) {
+  for (QTreeWidgetItemIterator it(tree_); *it; ++it)
+    if ((*it)->data(0, kKindRole).toInt() == static_cast<int>(kind) && (*it)->data(0, kIndexRole).toInt() == index) {
+      tree_->setCurrentItem(*it);
+      return;
+    }
+}
+
+void CellPanel::showSelection() {
+  refreshing_ = true;
+  const Cell* cell = doc_->cell();
+  const Selection s = cell ? selection_ : Selection{};
+  pose_->setEditable(s.kind != Kind::None);
+  remove_->setEnabled(s.kind == Kind::Furniture || s.kind == Kind::Part);
+  handles_->clear();
+  const bool part = s.kind == Kind::Part;
+  handles_->setEnabled(part);
+  delete_handle_->setEnabled(part);
+  regenerate_->setEnabled(part);
+  if (s.kind == Kind::None) {
+    info_->setText(cell ? tr("Select the robot, a piece of furniture or a part to place it.") : QString());
+    refreshing_ = false;
+    return;
+  }
+  if (s.kind == Kind::Robot) {
+    pose_->setTitle(tr("Robot base in the world"));
+    pose_->setPose(cell->robot.base, true);
+    info_->setText(cell->robot.mobile ? tr("A mobile robot: its base moves through joints of its own; this is where they "
+                                           "start from.")
+                                      : tr("Where the robot's base stands."));
+  } else if (s.kind == Kind::Furniture) {
+    const CellFurniture& f = cell->furniture[static_cast<size_t>(s.index)];
+    pose_->setTitle(tr("Pose of %1 in the world").arg(q(f.name)));
+    pose_->setPose(f.pose, true);
+    int supports = 0;
+    for (const auto& sf : doc_->scene().furniture)
+      if (sf.name == f.name)
+        for (const auto& c : sf.srdf.contacts) supports += static_cast<int>(c.polygons.size());
+    info_->setText(tr("%1; %2 support polygon(s)%3 (outlined green in the 3D view)")
+                       .arg(shapeText(f))
+                       .arg(supports)
+                       .arg(f.auto_supports ? tr(", found on its upward faces") : tr(", given")));
+  } else {
+    const CellPart& p = cell->parts[static_cast<size_t>(s.index)];
+    pose_->setTitle(tr("Pose of %1 at the start").arg(q(p.name)));
+    pose_->setPose(p.pose, true);
+    const int o = doc_->scene().object_index(p.name);
+    if (o >= 0) {
+      const SceneObject& so = doc_->scene().objects[static_cast<size_t>(o)];
+      for (const auto& h : so.srdf.handles) handles_->addItem(q(h.name));
+      int placements = 0;
+      for (const auto& c : so.srdf.contacts) placements += static_cast<int>(c.polygons.size());
+      info_->setText(tr("Mesh %1 (scale %2); %3 handle(s) %4; %5 resting placement(s)")
+                         .arg(fileName(p.mesh))
+                         .arg(p.scale)
+                         .arg(so.srdf.handles.size())
+                         .arg(p.auto_handles ? tr("generated for the gripper") : tr("kept as edited"))
+                         .arg(placements));
+    }
+  }
+  refreshing_ = false;
+}
+
+bool CellPanel::edit(const Cell& after, const QString& text, int merge_key) {
+  try {
+    doc_->editCell(after, text, merge_key);
+  } catch (const InputError& e) {
+    error_ = q(e.what());
+    message_->setStyleSheet(QStringLiteral("color: #c62828"));
+    message_->setText(error_);
+    showSelection();  // the fields go back to what the cell holds
+    return false;
+  }
+  error_.clear();
+  message_->setStyleSheet({});
+  message_->setText(tr("%1 — written to %2").arg(text, fileName(after.file)));
+  return true;
+}
+
+bool CellPanel::setSelectedPose(const Pose& pose, int field) {
+  if (!doc_->cell() || selection_.kind == Kind::None) return false;
+  Cell after = *doc_->cell();
+  QString text;
+  const auto i = static_cast<size_t>(selection_.index);
+  if (selection_.kind == Kind::Robot) {
+    after.robot.base = pose;
+    text = tr("Move the robot base");
+  } else if (selection_.kind == Kind::Furniture) {
+    after.furniture[i].pose = pose;
+    text = tr("Move %1").arg(q(after.furniture[i].name));
+  } else {
+    after.parts[i].pose = pose;
+    text = tr("Move %1").arg(q(after.parts[i].name));
+  }
+  // One field's spin steps on one item are one undo step.
+  const int key = field < 0 ? -1 : (static_cast<int>(selection_.kind) * 10000 + selection_.index) * 10 + field;
+  return edit(after, text, key);
+}
+
+bool CellPanel::addPart(const QString& mesh_file, double scale) {
+  if (!doc_->cell()) return false;
+  Cell after = *doc_->cell();
+  int index = -1;
+  try {
+    CellSceneOptions options;
+    options.data_dir = doc_->dataDir();
+    index = add_part_from_mesh(after, mesh_file.toStdString(), scale, options);
+  } catch (const InputError& e) {
+    error_ = q(e.what());
+    message_->setStyleSheet(QStringLiteral("color: #c62828"));
+    message_->setText(error_);
+    return false;
+  }
+  if (!edit(after, tr("Add part %1").arg(q(after.parts[static_cast<size_t>(index)].name)))) return false;
+  select(Kind::Part, index);
+  return true;
+}
+
+bool CellPanel::addFurniture(CellFurniture::Kind kind, const QString& mesh_file, double scale) {
+  if (!doc_->cell()) return false;
+  Cell after = *doc_->cell();
+  CellFurniture f;
+  f.kind = kind;
+  // Beside everything there is, on the floor, for the operator to move where it belongs.
+  double y = 0;
+  for (const auto& g : after.furniture) y = std::min(y, g.pose.translation().y() - 1.0);
+  if (kind == CellFurniture::Kind::Box) {
+    f.name = unique_cell_name(after, "box");
+    f.box = {0.6, 0.4, 0.75};
+    f.pose.translation() = Eigen::Vector3d(0.6, y, 0.375);
+  } else if (kind == CellFurniture::Kind::Cylinder) {
+    f.name = unique_cell_name(after, "cylinder");
+    f.radius = 0.2;
+    f.length = 0.75;
+    f.pose.translation() = Eigen::Vector3d(0.6, y, 0.375);
+  } else {
+    f.name = unique_cell_name(after, QFileInfo(mesh_file).completeBaseName().toStdString());
+    f.file = QFileInfo(mesh_file).absoluteFilePath().toStdString();
+    f.scale = scale;
+    f.pose.translation() = Eigen::Vector3d(0.6, y, 0.0);
+  }
+  after.furniture.push_back(f);
+  if (!edit(after, tr("Add %1").arg(q(f.name)))) return false;
+  select(Kind::Furniture, static_cast<int>(after.furniture.size()) - 1);
+  return true;
+}
+
+bool CellPanel::removeSelected() {
+  if (!doc_->cell()) return false;
+  Cell after = *doc_->cell();
+  const auto i = static_cast<size_t>(selection_.index);
+  QString text;
+  if (selection_.kind == Kind::Furniture) {
+    text = tr("Remove %1").arg(q(after.furniture[i].name));
+    after.furniture.erase(after.furniture.begin() + static_cast<long>(i));
+  } else if (selection_.kind == Kind::Part) {
+    text = tr("Remove %1").arg(q(after.parts[i].name));
+    after.parts.erase(after.parts.begin() + static_cast<long>(i));
+  } else {
+    return false;
+  }
+  const Selection was = selection_;
+  selection_ = {};
+  if (!edit(after, text)) {
+    selection_ = was;
+    return false;
+  }
+  return true;
+}
+
+bool CellPanel::deleteHandle(int part, int handle) {
+  if (!doc_->cell() || part < 0 || part >= static_cast<int>(doc_->cell()->parts.size())) return false;
+  Cell after = *doc_->cell();
+  CellPart& p = after.parts[static_cast<size_t>(part)];
+  const int o = doc_->scene().object_index(p.name);
+  if (o < 0) return false;
+  std::vector<GraspFrame> handles = doc_->scene().objects[static_cast<size_t>(o)].srdf.handles;
+  if (handle < 0 || handle >= static_cast<int>(handles.size())) return false;
+  const std::string name = handles[static_cast<size_t>(handle)].name;
+  handles.erase(handles.begin() + handle);
+  // The generated handles become the part's own, less the deleted one.
+  p.auto_handles = false;
+  p.handles = handles;
+  return edit(after, tr("Delete handle %1 of %2").arg(q(name), q(p.name)));
+}
+
+bool CellPanel::regenerateHandles(int part) {
+  if (!doc_->cell() || part < 0 || part >= static_cast<int>(doc_->cell()->parts.size())) return false;
+  Cell after = *doc_->cell();
+  CellPart& p = after.parts[static_cast<size_t>(part)];
+  p.auto_handles = true;
+  p.handles.clear();
+  return edit(after, tr("Generate the handles of %1").arg(q(p.name)));
+}
+
+void CellPanel::saveCellAs() {
+  if (!doc_->cell()) return;
+  const QString dir = QFileInfo(doc_->filePath().isEmpty() ? QString() : doc_->filePath()).absolutePath();
+  const QString file = QFileDialog::getSaveFileName(this, tr("Save the cell as"), dir, tr("Cell files (*.json)"));
+  if (file.isEmpty()) return;
+  try {
+    doc_->saveCellAs(file);
+    message_->setStyleSheet({});
+    message_->setText(tr("The cell is now %1").arg(file));
+  } catch (const InputError& e) {
+    message_->setStyleSheet(QStringLiteral("color: #c62828"));
+    message_->setText(q(e.what()));
+  }
+}
+
+void CellPanel::addPartFromDialog() {
+  const QString file = QFileDialog::getOpenFileName(this, tr("Add a part from its mesh"), {}, tr(kMeshFilter));
+  if (file.isEmpty()) return;
+  double guess = 0.001;
+  try {
+    guess = guess_unit_scale(file.toStdString());
+  } catch (const InputError& e) {
+    message_->setStyleSheet(QStringLiteral("color: #c62828"));
+    message_->setText(q(e.what()));
+    return;
+  }
+  QStringList units;
+  int preset = 0;
+  for (size_t k = 0; k < std::size(kUnits); ++k) {
+    units << tr(kUnits[k].first);
+    if (kUnits[k].second == guess) preset = static_cast<int>(k);
+  }
+  bool ok = false;
+  const QString unit = QInputDialog::getItem(this, tr("Units of %1").arg(QFileInfo(file).fileName()),
+                                             tr("The mesh file's coordinates are in"), units, preset, false, &ok);
+  if (!ok) return;
+  addPart(file, kUnits[units.indexOf(unit)].second);
+}
+
+void CellPanel::addMeshFurnitureFromDialog() {
+  const QString file = QFileDialog::getOpenFileName(this, tr("Add furniture from its mesh"), {}, tr(kMeshFilter));
+  if (file.isEmpty()) return;
+  double scale = 1.0;
+  try {
+    scale = guess_unit_scale(file.toStdString());
+  } catch (const InputError& e) {
+    message_->setStyleSheet(QStringLiteral("color: #c62828"));
+    message_->setText(q(e.what()));
+    return;
+  }
+  addFurniture(CellFurniture::Kind::Mesh, file, scale);
+}
+
+}  // namespace demoplan::ui

@@ -1,0 +1,72 @@
+#pragma once
+// The cell editor: the robot, the furniture and the parts of a project on a cell file, each
+// placed by typing millimetres and degrees; parts added from mesh files (put down on a free spot
+// of a support), furniture as a box, a cylinder or a mesh file; a part's handles listed, one
+// deleted or all generated again. Every change is one undo step and is written to the cell file
+// at once (Document::editCell); a bundled example is first saved under the user's own name.
+#include <QWidget>
+
+#include "ui/document/document.h"
+
+class QLabel;
+class QListWidget;
+class QPushButton;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace demoplan::ui {
+
+class PoseFields;
+
+class CellPanel : public QWidget {
+  Q_OBJECT
+public:
+  explicit CellPanel(Document* doc, QWidget* parent = nullptr);
+
+  enum class Kind { None, Robot, Furniture, Part };
+  struct Selection {
+    Kind kind = Kind::None;
+    int index = -1;  // furniture or part index
+  };
+  Selection selection() const { return selection_; }
+  void select(Kind kind, int index);
+
+  // What the buttons do after their file dialogs; false when the cell refused it (the reason is
+  // shown in the panel and returned by lastError()).
+  bool addPart(const QString& mesh_file, double scale);
+  bool addFurniture(CellFurniture::Kind kind, const QString& mesh_file = {}, double scale = 1.0);
+  bool removeSelected();
+  bool deleteHandle(int part, int handle);
+  bool regenerateHandles(int part);
+  bool setSelectedPose(const Pose& pose, int field = -1);
+  QString lastError() const { return error_; }
+
+  QTreeWidget* tree() const { return tree_; }
+  PoseFields* poseFields() const { return pose_; }
+  QListWidget* handleList() const { return handles_; }
+  QLabel* infoLabel() const { return info_; }
+
+private:
+  void refresh();
+  void showSelection();
+  bool edit(const Cell& after, const QString& text, int merge_key = -1);
+  void saveCellAs();
+  void addPartFromDialog();
+  void addMeshFurnitureFromDialog();
+
+  Document* doc_;
+  QTreeWidget* tree_;
+  QLabel* file_label_;
+  QLabel* info_;
+  PoseFields* pose_;
+  QListWidget* handles_;
+  QPushButton* delete_handle_;
+  QPushButton* regenerate_;
+  QPushButton* remove_;
+  QLabel* message_;
+  Selection selection_;
+  QString error_;
+  bool refreshing_ = false;
+};
+
+}  // namespace demoplan::ui
