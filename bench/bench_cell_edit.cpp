@@ -17,14 +17,20 @@ using namespace demoplan;
 
 const std::string kCells = std::string(DEMOPLAN_DATA_DIR) + "/../cells";
 
-void rebuild(benchmark::State& state, const char* name) {
+// `cached`: the parts' placements and handles kept between rebuilds, as the editor keeps them
+// (a move changes neither); without, every rebuild derives them again (a first load).
+void rebuild(benchmark::State& state, const char* name, bool cached) {
   const Cell cell = load_cell(kCells + "/" + name + ".json");
-  MeshCache cache;
-  const CellSceneOptions options{.data_dir = DEMOPLAN_DATA_DIR, .load_visual_meshes = true, .mesh_cache = &cache};
+  MeshCache meshes;
+  CellPartCache parts;
+  const CellSceneOptions options{.data_dir = DEMOPLAN_DATA_DIR, .load_visual_meshes = true, .mesh_cache = &meshes,
+                                 .part_cache = cached ? &parts : nullptr};
   for (auto _ : state) benchmark::DoNotOptimize(build_cell_scene(cell, options));
 }
-BENCHMARK_CAPTURE(rebuild, ur5_workbench, "ur5_workbench")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(rebuild, iiwa_shelf, "iiwa_shelf")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(rebuild, ur5_workbench, "ur5_workbench", false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(rebuild, ur5_workbench_cached, "ur5_workbench", true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(rebuild, iiwa_shelf, "iiwa_shelf", false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(rebuild, iiwa_shelf_cached, "iiwa_shelf", true)->Unit(benchmark::kMillisecond);
 
 void write(benchmark::State& state) {
   Cell cell = load_cell(kCells + "/ur5_workbench.json");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/cell/support_surfaces.h"
@@ -194,30 +195,44 @@ SceneObject cell_part(const Cell& cell, size_t index, const ParallelGripper& gri
   so.model = single_link(p.name, "base_link", g);
   so.srdf.robot_name = p.name;
   so.srdf.path = cell.file;
-  const Eigen::Vector3d com = centre_of_mass(*mesh, p.scale);
-  if (p.auto_contacts) {
-    std::vector<Eigen::Vector3d> points;
-    for (const auto& v : mesh->vertices) points.push_back(v.cast<double>() * p.scale);
-    std::vector<RestingPlacement> placements;
-    try {
-      placements = resting_placements(points, com);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(p.mesh, "vertices", e.what());
+  // Placements and handles from the mesh (the heavy part: Qhull, FCL hand checks), from the
+  // cache when the same part was built before with the same gripper.
+  auto derive = [&] {
+    CellPartCache::Entry e;
+    const Eigen::Vector3d com = centre_of_mass(*mesh, p.scale);
+    if (p.auto_contacts) {
+      std::vector<Eigen::Vector3d> points;
+      for (const auto& v : mesh->vertices) points.push_back(v.cast<double>() * p.scale);
+      try {
+        for (const auto& r : resting_placements(points, com)) e.placements.push_back(r.polygon);
+      } catch (const std::invalid_argument& ex) {
+        throw InputError(p.mesh, "vertices", ex.what());
+      }
     }
-    if (placements.empty()) throw InputError(cell.file, field + ".contacts", "the part has no face it can rest on");
-    std::vector<Polygon3> polygons;
-    for (const auto& r : placements) polygons.push_back(r.polygon);
-    so.srdf.contacts = {contact_surface(p.name + "_surface", "base_link", polygons)};
-    report.placements = static_cast<int>(placements.size());
+    if (p.auto_handles) {
+      GraspOptions options;
+      options.palm_clearance = cell.grasping.palm_clearance;
+      options.max_handles = cell.grasping.max_handles;
+      e.grasps = generate_handles(*mesh, p.scale, com, gripper, options, "base_link", p.name + "_grasp_");
+    }
+    return e;
+  };
+  std::ostringstream key;
+  key.precision(17);
+  key << p.mesh << '|' << p.scale << '|' << p.name << '|' << p.auto_contacts << p.auto_handles << '|'
+      << cell.grasping.palm_clearance << '|' << cell.grasping.max_handles << '|' << gripper.opening << '|'
+      << cell.robot.bundled << '|' << cell.robot.urdf << '|' << cell.robot.srdf;
+  const CellPartCache::Entry derived = o.part_cache ? o.part_cache->get(key.str(), derive) : derive();
+  if (p.auto_contacts) {
+    if (derived.placements.empty()) throw InputError(cell.file, field + ".contacts", "the part has no face it can rest on");
+    so.srdf.contacts = {contact_surface(p.name + "_surface", "base_link", derived.placements)};
+    report.placements = static_cast<int>(derived.placements.size());
   } else {
     so.srdf.contacts = {contact_surface(p.name + "_surface", "base_link", p.contacts)};
     report.placements = static_cast<int>(p.contacts.size());
   }
   if (p.auto_handles) {
-    GraspOptions options;
-    options.palm_clearance = cell.grasping.palm_clearance;
-    options.max_handles = cell.grasping.max_handles;
-    report.grasps = generate_handles(*mesh, p.scale, com, gripper, options, "base_link", p.name + "_grasp_");
+    report.grasps = derived.grasps;
     report.generated = true;
     if (report.grasps.handles.empty())
       throw InputError(cell.file, field + ".handles", "no grasp found for '" + p.name + "': " + report.grasps.why_none);
@@ -230,6 +245,16 @@ SceneObject cell_part(const Cell& cell, size_t index, const ParallelGripper& gri
 }
 
 }  // namespace
+
+CellPartCache::Entry CellPartCache::get(const std::string& key, const std::function<Entry()>& make) {
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = entries_.find(key); it != entries_.end()) return it->second;
+  }
+  Entry e = make();  // outside the lock: parts of one cell may be made in parallel
+  std::lock_guard lock(mutex_);
+  return entries_.emplace(key, std::move(e)).first->second;
+}
 
 Scene build_cell_scene(const Cell& cell, const CellSceneOptions& o, CellSceneReport* report) {
   CellSceneReport local;

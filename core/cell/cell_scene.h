@@ -3,6 +3,9 @@
 // knows which it came from. Parts get their contact polygons from their resting placements and
 // their handles from the generator for the robot's gripper where the cell says "auto"; furniture
 // gets its supports from its upward faces.
+#include <functional>
+#include <map>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -12,10 +15,29 @@
 
 namespace demoplan {
 
+// What a part's mesh gives (resting placements, generated handles), kept between builds of the
+// same cell: the cell editor rebuilds the scene on every change, and moving a part or a table
+// changes neither. Keyed by everything they depend on (mesh, scale, gripper, grasp options).
+// Thread-safe.
+class CellPartCache {
+public:
+  struct Entry {
+    std::vector<Polygon3> placements;
+    GraspReport grasps;
+  };
+  // The entry for `key`, made by `make` the first time.
+  Entry get(const std::string& key, const std::function<Entry()>& make);
+
+private:
+  std::mutex mutex_;
+  std::map<std::string, Entry> entries_;
+};
+
 struct CellSceneOptions {
   std::string data_dir;  // the bundled benchmark data (robots.json); empty: the caller's default
   bool load_visual_meshes = false;
   MeshCache* mesh_cache = nullptr;
+  CellPartCache* part_cache = nullptr;
 };
 
 // What was computed for the user's files, to show and to explain.

@@ -143,3 +143,34 @@ TEST(CellEdits, TheDemonstrationFollowsTheParts) {
 
 }  // namespace
 }  // namespace demoplan
+
+namespace demoplan {
+namespace {
+
+// The editor's cache of what parts derive from their meshes gives what a fresh build gives, and
+// a change it depends on (the scale) is not served from it.
+TEST(CellPartCache, ServesWhatAFreshBuildGives) {
+  const std::string file = std::string(DEMOPLAN_DATA_DIR) + "/../cells/ur5_workbench.json";
+  Cell cell = load_cell(file);
+  CellPartCache cache;
+  const CellSceneOptions cached{.data_dir = DEMOPLAN_DATA_DIR, .part_cache = &cache};
+  const Scene fresh = build_cell_scene(cell, {.data_dir = DEMOPLAN_DATA_DIR});
+  build_cell_scene(cell, cached);
+  cell.parts[0].pose.translation().x() += 0.1;  // a move: served from the cache
+  const Scene again = build_cell_scene(cell, cached);
+  for (size_t k = 0; k < fresh.objects.size(); ++k) {
+    ASSERT_EQ(again.objects[k].srdf.handles.size(), fresh.objects[k].srdf.handles.size());
+    for (size_t h = 0; h < fresh.objects[k].srdf.handles.size(); ++h)
+      EXPECT_TRUE(again.objects[k].srdf.handles[h].pose.isApprox(fresh.objects[k].srdf.handles[h].pose));
+    EXPECT_EQ(again.objects[k].srdf.contacts[0].polygons.size(), fresh.objects[k].srdf.contacts[0].polygons.size());
+  }
+  cell.parts[0].scale *= 1.5;  // a larger part: placements and handles derived anew
+  const Scene larger = build_cell_scene(cell, cached);
+  const Scene larger_fresh = build_cell_scene(cell, {.data_dir = DEMOPLAN_DATA_DIR});
+  ASSERT_EQ(larger.objects[0].srdf.handles.size(), larger_fresh.objects[0].srdf.handles.size());
+  EXPECT_TRUE(larger.objects[0].srdf.handles[0].pose.isApprox(larger_fresh.objects[0].srdf.handles[0].pose));
+  EXPECT_FALSE(larger.objects[0].srdf.handles[0].pose.isApprox(fresh.objects[0].srdf.handles[0].pose));
+}
+
+}  // namespace
+}  // namespace demoplan

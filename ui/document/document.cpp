@@ -90,7 +90,10 @@ const char* type_word(EventType t) { return t == EventType::Grasp ? "grasp" : "r
 }  // namespace
 
 Document::Document(std::string default_data_dir, QObject* parent)
-    : QObject(parent), data_dir_(std::move(default_data_dir)), mesh_cache_(std::make_unique<MeshCache>()) {
+    : QObject(parent),
+      data_dir_(std::move(default_data_dir)),
+      mesh_cache_(std::make_unique<MeshCache>()),
+      part_cache_(std::make_unique<CellPartCache>()) {
   media_ = new Media(this);
   planning_ = new PlanningController(this);
   detection_ = new EventDetection(this);
@@ -288,17 +291,22 @@ bool Document::cellIsBundled() const {
   return !rel.empty() && *rel.begin() != "..";
 }
 
+CellSceneOptions Document::cellSceneOptions() const {
+  CellSceneOptions o;
+  o.data_dir = data_dir_;
+  o.load_visual_meshes = true;
+  o.mesh_cache = mesh_cache_.get();
+  o.part_cache = part_cache_.get();
+  return o;
+}
+
 void Document::editCell(const Cell& after, const QString& text, int merge_key) {
   if (!cell_) throw std::logic_error("editCell: the project is not on a cell");
   if (cellIsBundled())
     throw InputError(cell_->file, "", "a bundled example cell is not changed in place: save it under a name of your "
                                       "own first (Save Cell As in the Cell panel)");
   CellCommand::State next{after, nullptr, {}};
-  CellSceneOptions options;
-  options.data_dir = data_dir_;
-  options.load_visual_meshes = true;
-  options.mesh_cache = mesh_cache_.get();
-  next.scene = std::make_shared<const Scene>(build_cell_scene(after, options));
+  next.scene = std::make_shared<const Scene>(build_cell_scene(after, cellSceneOptions()));
   next.demo = demonstration_for_parts(demonstration_, *next.scene, cell_start_state(after, *next.scene));
   save_cell(after.file, after);  // throws when it cannot be written: then nothing changed
   undo_.push(new CellCommand(this, text, {*cell_, scene_, demonstration_}, std::move(next), merge_key));

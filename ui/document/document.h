@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "core/cell/cell.h"
+#include "core/cell/cell_scene.h"
 #include "core/demo/benchmark_scene.h"
 #include "core/project/project.h"
 #include "ui/document/event_detection.h"
@@ -82,6 +83,9 @@ public:
   void editCell(const Cell& after, const QString& text, int merge_key = -1);
   // Writes the cell to `file` (relative paths follow) and refers the project to it.
   void saveCellAs(const QString& file);
+  // How the document builds cell scenes: its data folder, visual meshes, and the caches shared
+  // by every rebuild (meshes, and the parts' placements and handles).
+  CellSceneOptions cellSceneOptions() const;
   // Used by the undo commands.
   void applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, const Demonstration& demo);
 
@@ -148,6 +152,7 @@ private:
 
   std::string data_dir_;
   std::unique_ptr<MeshCache> mesh_cache_;
+  std::unique_ptr<CellPartCache> part_cache_;
   SceneReference scene_ref_;
   Demonstration demonstration_;
   QString file_;

@@ -302,9 +302,7 @@ bool CellPanel::addPart(const QString& mesh_file, double scale) {
   Cell after = *doc_->cell();
   int index = -1;
   try {
-    CellSceneOptions options;
-    options.data_dir = doc_->dataDir();
-    index = add_part_from_mesh(after, mesh_file.toStdString(), scale, options);
+    index = add_part_from_mesh(after, mesh_file.toStdString(), scale, doc_->cellSceneOptions());
   } catch (const InputError& e) {
     error_ = q(e.what());
     message_->setStyleSheet(QStringLiteral("color: #c62828"));
