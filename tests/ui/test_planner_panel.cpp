@@ -39,7 +39,8 @@ private slots:
     QVERIFY(!panel.planButton()->isEnabled());
     QVERIFY(panel.cancelButton()->isEnabled());
     // It makes progress: snapshots arrive and the state table fills.
-    QVERIFY(test::waitFor([&] { return doc.planning()->runner()->lastSnapshot().iterations > 0; }, 5000));
+    // Bounds, not expectations: under the sanitizers the graph alone takes seconds.
+  QVERIFY(test::waitFor([&] { return doc.planning()->runner()->lastSnapshot().iterations > 0; }, 30000));
     QTest::qWait(400);
     const double stall = meter.stop();
     qInfo("longest event-loop stall while planning: %.1f ms", stall);

@@ -220,6 +220,9 @@ SceneView::SceneView(Document* doc, QWidget* parent) : QOpenGLWidget(parent), do
 }
 
 SceneView::~SceneView() {
+  // QOpenGLWidget's destructor destroys the context after this one has run: its
+  // aboutToBeDestroyed must not call back into a SceneView that is gone (found by UBSan).
+  if (QOpenGLContext* c = context()) disconnect(c, nullptr, this, nullptr);
   if (gl_ready_) {
     makeCurrent();
     releaseGl();
