@@ -49,8 +49,9 @@ std::vector<MarkedObject> cell_part_markers(const Cell& cell, const std::vector<
   std::set<int> used;
   for (const auto& p : cell.parts)
     for (const auto& m : p.markers) used.insert(m.id);
-  MarkerIds own(std::move(used));
-  MarkerIds& free_ids = ids ? (*ids = own) : own;
+  MarkerIds local;
+  MarkerIds& free_ids = ids ? *ids : local;
+  free_ids = MarkerIds(std::move(used));
   std::vector<MarkedObject> out;
   for (size_t k = 0; k < part_ids.size(); ++k) {
     MarkedObject& o = out.emplace_back();

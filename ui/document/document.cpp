@@ -4,6 +4,7 @@
 #include <QUndoCommand>
 #include <algorithm>
 #include <filesystem>
+#include <utility>
 
 #include "core/cell/cell_edits.h"
 #include "core/cell/cell_scene.h"
@@ -63,8 +64,9 @@ public:
   };
   CellCommand(Document* doc, const QString& text, State before, State after, int merge_key)
       : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)), merge_key_(merge_key) {}
-  void redo() override { doc_->applyCell(after_.cell, after_.scene, after_.demo); }
-  void undo() override { doc_->applyCell(before_.cell, before_.scene, before_.demo); }
+  // The first redo is the edit itself: editCell has written the file already.
+  void redo() override { doc_->applyCell(after_.cell, after_.scene, after_.demo, !std::exchange(first_, false)); }
+  void undo() override { doc_->applyCell(before_.cell, before_.scene, before_.demo, true); }
   int id() const override { return merge_key_ >= 0 ? kMergeCell : -1; }
   bool mergeWith(const QUndoCommand* other) override {
     auto* o = dynamic_cast<const CellCommand*>(other);
@@ -78,6 +80,7 @@ private:
   Document* doc_;
   State before_, after_;
   int merge_key_;
+  bool first_ = true;
 };
 
 constexpr int kMergePose = 1;
@@ -312,7 +315,7 @@ void Document::editCell(const Cell& after, const QString& text, int merge_key) {
   undo_.push(new CellCommand(this, text, {*cell_, scene_, demonstration_}, std::move(next), merge_key));
 }
 
-void Document::applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, const Demonstration& demo) {
+void Document::applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, const Demonstration& demo, bool write) {
   // The file is where the cell lives now (Save Cell As may have moved it since the edit).
   const std::string file = cell_ ? cell_->file : cell.file;
   cell_ = cell;
@@ -320,7 +323,7 @@ void Document::applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, c
   scene_ = std::move(scene);
   // Undo and redo write the file back, as the edit did; a failure leaves the project modified.
   try {
-    save_cell(file, *cell_);
+    if (write) save_cell(file, *cell_);
   } catch (const InputError&) {
     extra_modified_ = true;
   }

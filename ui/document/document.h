@@ -86,8 +86,8 @@ public:
   // How the document builds cell scenes: its data folder, visual meshes, and the caches shared
   // by every rebuild (meshes, and the parts' placements and handles).
   CellSceneOptions cellSceneOptions() const;
-  // Used by the undo commands.
-  void applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, const Demonstration& demo);
+  // Used by the undo commands; `write`: the cell file does not hold `cell` yet.
+  void applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, const Demonstration& demo, bool write);
 
   // ---- demonstration and edits (every edit goes through the undo stack)
   const Demonstration& demonstration() const { return demonstration_; }

@@ -265,15 +265,11 @@ bool CellPanel::edit(const Cell& after, const QString& text, int merge_key) {
   try {
     doc_->editCell(after, text, merge_key);
   } catch (const InputError& e) {
-    error_ = q(e.what());
-    message_->setStyleSheet(QStringLiteral("color: #c62828"));
-    message_->setText(error_);
+    showError(q(e.what()));
     showSelection();  // the fields go back to what the cell holds
     return false;
   }
-  error_.clear();
-  message_->setStyleSheet({});
-  message_->setText(tr("%1 — written to %2").arg(text, fileName(after.file)));
+  showNote(tr("%1 — written to %2").arg(text, fileName(after.file)));
   return true;
 }
 
@@ -304,9 +300,7 @@ bool CellPanel::addPart(const QString& mesh_file, double scale) {
   try {
     index = add_part_from_mesh(after, mesh_file.toStdString(), scale, doc_->cellSceneOptions());
   } catch (const InputError& e) {
-    error_ = q(e.what());
-    message_->setStyleSheet(QStringLiteral("color: #c62828"));
-    message_->setText(error_);
+    showError(q(e.what()));
     return false;
   }
   if (!edit(after, tr("Add part %1").arg(q(after.parts[static_cast<size_t>(index)].name)))) return false;
@@ -398,25 +392,40 @@ void CellPanel::saveCellAs() {
   if (file.isEmpty()) return;
   try {
     doc_->saveCellAs(file);
-    message_->setStyleSheet({});
-    message_->setText(tr("The cell is now %1").arg(file));
+    showNote(tr("The cell is now %1").arg(file));
   } catch (const InputError& e) {
-    message_->setStyleSheet(QStringLiteral("color: #c62828"));
-    message_->setText(q(e.what()));
+    showError(q(e.what()));
   }
 }
 
-void CellPanel::addPartFromDialog() {
-  const QString file = QFileDialog::getOpenFileName(this, tr("Add a part from its mesh"), {}, tr(kMeshFilter));
-  if (file.isEmpty()) return;
-  double guess = 0.001;
+void CellPanel::showError(const QString& text) {
+  error_ = text;
+  message_->setStyleSheet(QStringLiteral("color: #c62828"));
+  message_->setText(text);
+}
+
+void CellPanel::showNote(const QString& text) {
+  error_.clear();
+  message_->setStyleSheet({});
+  message_->setText(text);
+}
+
+QString CellPanel::chooseMesh(const QString& title, double* unit_scale) {
+  const QString file = QFileDialog::getOpenFileName(this, title, {}, tr(kMeshFilter));
+  if (file.isEmpty()) return {};
   try {
-    guess = guess_unit_scale(file.toStdString());
+    *unit_scale = guess_unit_scale(file.toStdString());
   } catch (const InputError& e) {
-    message_->setStyleSheet(QStringLiteral("color: #c62828"));
-    message_->setText(q(e.what()));
-    return;
+    showError(q(e.what()));
+    return {};
   }
+  return file;
+}
+
+void CellPanel::addPartFromDialog() {
+  double guess = 0.001;
+  const QString file = chooseMesh(tr("Add a part from its mesh"), &guess);
+  if (file.isEmpty()) return;
   QStringList units;
   int preset = 0;
   for (size_t k = 0; k < std::size(kUnits); ++k) {
@@ -431,17 +440,9 @@ void CellPanel::addPartFromDialog() {
 }
 
 void CellPanel::addMeshFurnitureFromDialog() {
-  const QString file = QFileDialog::getOpenFileName(this, tr("Add furniture from its mesh"), {}, tr(kMeshFilter));
-  if (file.isEmpty()) return;
   double scale = 1.0;
-  try {
-    scale = guess_unit_scale(file.toStdString());
-  } catch (const InputError& e) {
-    message_->setStyleSheet(QStringLiteral("color: #c62828"));
-    message_->setText(q(e.what()));
-    return;
-  }
-  addFurniture(CellFurniture::Kind::Mesh, file, scale);
+  const QString file = chooseMesh(tr("Add furniture from its mesh"), &scale);
+  if (!file.isEmpty()) addFurniture(CellFurniture::Kind::Mesh, file, scale);
 }
 
 }  // namespace demoplan::ui

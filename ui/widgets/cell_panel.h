@@ -53,6 +53,11 @@ private:
   void saveCellAs();
   void addPartFromDialog();
   void addMeshFurnitureFromDialog();
+  // A mesh file from a file dialog and the unit scale guessed for it; "" when none (an unreadable
+  // file is reported in the panel).
+  QString chooseMesh(const QString& title, double* unit_scale);
+  void showError(const QString& text);  // in red; lastError() returns it
+  void showNote(const QString& text);
 
   Document* doc_;
   QTreeWidget* tree_;
