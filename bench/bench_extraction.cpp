@@ -3,12 +3,14 @@
 // extracted and compared with their ground truth (also from simulated BOP estimates and hand
 // detections instead of markers); then the event detector runs on the real
 // per-frame pose estimates of the tasks (objects_poses) against their contact labels.
-// Prints Markdown tables. Usage: bench_extraction [--quick] [--keep DIR]
+// Prints Markdown tables. Usage: bench_extraction [--quick] [--segments] [--tracker model] [--keep DIR]
+// (--tracker model: the videos without markers on the parts, the model-based tracker from init.json)
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,8 @@
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/synthetic_video.h"
 #include "perception/tracking/marker_pose_tracker.h"
+#include "perception/tracking/model_pose_tracker.h"
+#include "perception/tracking/tracker_init.h"
 #include "perception/tracking/pose_track.h"
 
 namespace fs = std::filesystem;
@@ -74,25 +78,32 @@ void row(const std::string& label, const Pool& p, bool with_fps) {
 
 int main(int argc, char** argv) {
   bool quick = false, segments = false;  // --segments: segment_tracks reads the tracks
+  bool model = false;                     // --tracker model
   std::string keep;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
     if (!std::strcmp(argv[i], "--segments")) segments = true;
     if (!std::strcmp(argv[i], "--keep") && i + 1 < argc) keep = argv[++i];
+    if (!std::strcmp(argv[i], "--tracker") && i + 1 < argc) model = !std::strcmp(argv[++i], "model");
   }
   const std::string data = DEMOPLAN_DATA_DIR;
   const fs::path root = keep.empty() ? fs::temp_directory_path() / ("demoplan_bench_extraction_" + std::to_string(::getpid()))
                                      : fs::path(keep);
   const std::vector<std::string> tasks = quick ? std::vector<std::string>{"shelf_0"}
                                                : std::vector<std::string>{"shelf_0", "shelf_1", "shelf_2", "tunnel_0", "waiter_0"};
-  const std::vector<Condition> conditions{{"clean", 0, 0, false, false},
-                                          {"clean + hands", 0, 0, false, true},
-                                          {"noise 6 + blur 3 px", 6, 3, false, false},
-                                          {"noise 8 + blur 5 px", 8, 5, false, false},
-                                          {"occluder while carried", 0, 0, true, false},
-                                          {"no markers: simulated BOP poses + hands", 0, 0, false, true, true}};
+  const std::vector<Condition> conditions =
+      model ? std::vector<Condition>{{"clean", 0, 0, false, false},
+                                     {"noise 6 + blur 3 px", 6, 3, false, false},
+                                     {"occluder while carried", 0, 0, true, false}}
+            : std::vector<Condition>{{"clean", 0, 0, false, false},
+                                     {"clean + hands", 0, 0, false, true},
+                                     {"noise 6 + blur 3 px", 6, 3, false, false},
+                                     {"noise 8 + blur 5 px", 8, 5, false, false},
+                                     {"occluder while carried", 0, 0, true, false},
+                                     {"no markers: simulated BOP poses + hands", 0, 0, false, true, true}};
 
-  std::printf("## Synthetic videos (1280x720, 30 fps, markers; tolerance 2 frames)\n\n");
+  std::printf("## Synthetic videos (1280x720, 30 fps, %s; tolerance 2 frames)\n\n",
+              model ? "no markers, model-based tracker" : "markers");
   std::printf("| task, condition | true events | detected | matched | precision | recall | median timing error (frames) "
               "| median translation error (mm) | median rotation error (deg) | median MSSD (mm) | max translation error (mm) "
               "| extraction fps |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -107,6 +118,7 @@ int main(int argc, char** argv) {
       so.blur_px = c.blur;
       so.occlusion = c.occlusion;
       so.detections = c.hands;
+      so.part_markers = !model;
       const fs::path dir = root / (t + "_" + std::to_string(&c - conditions.data()));
       const SynthOutput s = write_synthetic_demonstration(so, dir.string());
       ExtractionOptions eo;
@@ -117,8 +129,10 @@ int main(int argc, char** argv) {
         for (auto& o : scene.objects) o.markers.clear();
         eo.bop_csv = s.bop_csv;
       }
-      MarkerPoseTracker tracker(scene);
-      const ExtractionResult r = extract_demonstration(s.video, load_camera(s.camera), tracker, scene.task, eo);
+      std::unique_ptr<PoseTracker> tracker;
+      if (model) tracker = std::make_unique<ModelPoseTracker>(model_parts(scene, s.scene, data), load_tracker_init(s.init), s.init);
+      else tracker = std::make_unique<MarkerPoseTracker>(scene);
+      const ExtractionResult r = extract_demonstration(s.video, load_camera(s.camera), *tracker, scene.task, eo);
       const Demonstration truth = load_demonstration(s.truth);
       const DemonstrationEvaluation e = evaluate_demonstration(r.demonstration, truth, 2, benchmark_model_points(data, t));
       Pool one;
@@ -131,6 +145,10 @@ int main(int argc, char** argv) {
     row("**all, " + c.name + "**", all, true);
   }
 
+  if (model) {
+    if (keep.empty()) fs::remove_all(root);
+    return 0;
+  }
   std::printf("\n## Real pose tracks (gtamp objects_poses) against the contact labels\n\n");
   std::printf("| task | true events | detected | matched (2 frames) | precision | recall | matched (5 frames) | precision | "
               "recall | median signed timing error (frames) |\n|---|---|---|---|---|---|---|---|---|---|\n");

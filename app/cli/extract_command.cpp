@@ -13,6 +13,8 @@
 #include "perception/extraction/tracks_file.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/tracking/marker_pose_tracker.h"
+#include "perception/tracking/model_pose_tracker.h"
+#include "perception/tracking/tracker_init.h"
 
 namespace demoplan::cli {
 
@@ -20,6 +22,7 @@ namespace {
 
 struct ExtractCliOptions {
   std::string video, camera, scene, detections, hands, out, events = "thresholds";
+  std::string tracker = "markers", init, data_dir;
   bool board = false;
   bool json = false;
 };
@@ -49,8 +52,19 @@ int run_extract(const ExtractCliOptions& o) {
   options.board_extrinsics = o.board;
   if (o.events == "segments") options.events = perception::ExtractionOptions::Events::Segments;
   options.camera_source = camera_path;
-  perception::MarkerPoseTracker tracker(scene);
-  const perception::ExtractionResult r = perception::extract_demonstration(o.video, camera, tracker, scene.task, options);
+  std::unique_ptr<perception::PoseTracker> tracker;
+  if (o.tracker == "model") {
+    // The parts' poses in the first frame: --init, else init.json beside the scene.
+    std::string init = o.init;
+    if (init.empty()) init = (std::filesystem::path(o.scene).parent_path() / "init.json").string();
+    if (!std::filesystem::is_regular_file(init))
+      throw InputError(init, "", "the model tracker needs every part's pose in the first frame: no such file (use --init)");
+    tracker = std::make_unique<perception::ModelPoseTracker>(perception::model_parts(scene, o.scene, o.data_dir),
+                                                             perception::load_tracker_init(init), init);
+  } else {
+    tracker = std::make_unique<perception::MarkerPoseTracker>(scene);
+  }
+  const perception::ExtractionResult r = perception::extract_demonstration(o.video, camera, *tracker, scene.task, options);
   save_demonstration(o.out, r.demonstration);
   const std::string tracks = perception::tracks_path_for(o.out);
   perception::save_tracks_file(tracks, r);
@@ -111,8 +125,17 @@ Command register_extract_command(CLI::App& app) {
                   "detector's; docs/perception.md)")
       ->check(CLI::IsMember({"thresholds", "segments"}))
       ->capture_default_str();
+  sub->add_option("--tracker", o->tracker,
+                  "pose tracker: markers (ArUco markers on the parts) or model (the parts' meshes, no markers; "
+                  "needs --init)")
+      ->check(CLI::IsMember({"markers", "model"}))
+      ->capture_default_str();
+  sub->add_option("--init", o->init,
+                  "with --tracker model: every part's pose in the first frame (demoplan-tracker-init JSON); "
+                  "default: init.json beside the scene");
   sub->add_flag("--board-extrinsics", o->board, "find the camera pose from the board even if the camera file gives it");
   sub->add_flag("--json", o->json, "print one JSON object on stdout");
+  add_data_dir_option(*sub, o->data_dir);
   return {sub, [o] { return run_extract(*o); }};
 }
 

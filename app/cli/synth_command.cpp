@@ -19,6 +19,7 @@ struct SynthCliOptions {
   int calibration_views = 30;
   std::string out;
   bool no_board = false;
+  bool no_markers = false;
   bool json = false;
 };
 
@@ -37,6 +38,7 @@ int run_cell_synth(const SynthCliOptions& o) {
             << "  camera       " << r.camera << "\n"
             << "  scene        " << r.scene << "\n"
             << "  truth        " << r.truth << "\n"
+            << "  init         " << r.init << "\n"
             << "  calibration  " << r.calibration_video << ", " << r.board << ", " << r.camera_truth << "\n";
   if (!r.failure.empty()) std::cerr << "  fewer picks than asked: " << r.failure << "\n";
   std::cerr << "  time         " << r.render_seconds << " s\n";
@@ -44,7 +46,7 @@ int run_cell_synth(const SynthCliOptions& o) {
     std::cout << nlohmann::json{{"cell", o.cell},          {"picks", r.picks},        {"failure", r.failure},
                                 {"frames", r.frames},      {"fps", r.fps},            {"events", r.events},
                                 {"video", r.video},        {"camera", r.camera},      {"scene", r.scene},
-                                {"truth", r.truth},        {"calibration_video", r.calibration_video},
+                                {"truth", r.truth},        {"init", r.init},          {"calibration_video", r.calibration_video},
                                 {"board", r.board},        {"camera_truth", r.camera_truth},
                                 {"render_time_s", r.render_seconds}}
                      .dump()
@@ -54,6 +56,7 @@ int run_cell_synth(const SynthCliOptions& o) {
 
 int run_synth(SynthCliOptions o) {
   o.synth.board = !o.no_board;
+  o.synth.part_markers = !o.no_markers;
   if (!o.cell.empty()) return run_cell_synth(o);
   const perception::SynthOutput r = perception::write_synthetic_demonstration(o.synth, o.out);
   std::cerr << "synthetic demonstration of " << o.synth.task << " (" << o.synth.robot << " pose " << o.synth.robot_pose
@@ -63,13 +66,14 @@ int run_synth(SynthCliOptions o) {
             << "  video       " << r.video << "\n"
             << "  camera      " << r.camera << "\n"
             << "  scene       " << r.scene << "\n"
-            << "  truth       " << r.truth << "\n";
+            << "  truth       " << r.truth << "\n"
+            << "  init        " << r.init << "\n";
   if (!r.bop_csv.empty()) std::cerr << "  detections  " << r.bop_csv << ", " << r.hands << "\n";
   std::cerr << "  time        " << r.render_seconds << " s\n";
   if (o.json) {
     nlohmann::json j{{"task", o.synth.task}, {"frames", r.frames}, {"fps", r.fps},     {"events", r.events},
                      {"video", r.video},     {"camera", r.camera}, {"scene", r.scene}, {"truth", r.truth},
-                     {"render_time_s", r.render_seconds}};
+                     {"init", r.init},       {"render_time_s", r.render_seconds}};
     if (!r.bop_csv.empty()) j["bop_csv"] = r.bop_csv, j["hands"] = r.hands;
     std::cout << j.dump() << std::endl;
   }
@@ -91,7 +95,7 @@ Command register_synth_command(CLI::App& app) {
       ->check(CLI::Range(6, 200))->capture_default_str()->needs(cell);
   sub->add_option("--robot", o->synth.robot, "robot the scene is for: panda, ur5, kmr_iiwa")->capture_default_str();
   sub->add_option("--pose", o->synth.robot_pose, "robot base pose id of the task")->capture_default_str();
-  sub->add_option("--out", o->out, "output folder (video.mp4, camera.json, scene.json, truth.json)")->required();
+  sub->add_option("--out", o->out, "output folder (video.mp4, camera.json, scene.json, truth.json, init.json)")->required();
   sub->add_option("--noise", o->synth.noise_sigma, "Gaussian image noise, grey levels")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
   sub->add_option("--blur", o->synth.blur_px, "linear motion blur length, pixels")
@@ -103,6 +107,8 @@ Command register_synth_command(CLI::App& app) {
   sub->add_option("--fourcc", o->synth.fourcc, "video codec: mp4v, avc1, MJPG, FFV1")->capture_default_str();
   sub->add_flag("--detections", o->synth.detections, "also write simulated bop.csv and hands.json");
   sub->add_flag("--no-board", o->no_board, "no ArUco board on the table");
+  sub->add_flag("--no-markers", o->no_markers,
+                "no markers on the parts (for the model-based tracker; init.json gives the parts' poses in frame 0)");
   sub->add_flag("--json", o->json, "print one JSON object on stdout");
   add_data_dir_option(*sub, o->synth.data_dir);
   return {sub, [o] { return run_synth(*o); }};

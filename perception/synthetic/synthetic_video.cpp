@@ -23,6 +23,8 @@
 #include "perception/importers/bop_csv.h"
 #include "perception/importers/hand_detections.h"
 #include "perception/markers/marker_scene.h"
+#include "perception/render/part_meshes.h"
+#include "perception/render/rasterizer.h"
 #include "perception/synthetic/board_placement.h"
 #include "perception/synthetic/board_video.h"
 #include "perception/synthetic/camera_placement.h"
@@ -30,7 +32,7 @@
 #include "perception/synthetic/hand_model.h"
 #include "perception/synthetic/image_degradation.h"
 #include "perception/synthetic/marker_layout.h"
-#include "perception/synthetic/rasterizer.h"
+#include "perception/tracking/tracker_init.h"
 #include "perception/video/video_writer.h"
 
 namespace demoplan::perception {
@@ -56,15 +58,6 @@ struct Assets {
   std::vector<std::pair<Pose, Eigen::Vector2d>> board_tops;
 };
 
-cv::Vec3f bgr_of(const Eigen::Vector4d& rgba) { return {float(rgba[2] * 255), float(rgba[1] * 255), float(rgba[0] * 255)}; }
-
-RenderMesh mesh_of(const Geometry& g) {
-  if (const auto* b = std::get_if<BoxShape>(&g.shape)) return box_mesh(b->size, bgr_of(g.color));
-  if (const auto* c = std::get_if<CylinderShape>(&g.shape)) return cylinder_mesh(c->radius, c->length, bgr_of(g.color));
-  if (const auto* m = std::get_if<MeshShape>(&g.shape); m && m->mesh) return render_mesh(*m->mesh, m->scale, Pose::Identity());
-  return {};
-}
-
 Assets load_assets(const BenchmarkTask& task) {
   Assets a;
   MeshCache cache;
@@ -76,7 +69,7 @@ Assets load_assets(const BenchmarkTask& task) {
     for (size_t l = 0; l < model.links.size(); ++l)
       for (const auto& g : model.links[l].visuals) {
         if (g.color[3] < 0.5) continue;  // the tunnel's see-through closing walls
-        RenderMesh m = mesh_of(g);
+        RenderMesh m = geometry_render_mesh(g);
         if (m.triangles.empty()) continue;
         const Pose pose = links[l] * g.origin;
         Eigen::AlignedBox3d box;
@@ -95,21 +88,7 @@ Assets load_assets(const BenchmarkTask& task) {
   options.mesh_cache = &cache;
   for (const auto& id : task.planning_object_ids) {
     const auto it = std::find_if(task.objects.begin(), task.objects.end(), [&](auto& o) { return o.id == id; });
-    const RobotModel model = load_urdf(it->urdf, options);
-    RenderMesh part;
-    for (const auto& g : model.links.front().visuals) {
-      RenderMesh m = mesh_of(g);
-      if (part.triangles.empty()) {
-        part = std::move(m);
-        if (!g.origin.isApprox(Pose::Identity())) {
-          for (auto& v : part.vertices) v = g.origin.cast<float>() * v;
-        }
-      } else {
-        part.append(m, g.origin);
-      }
-    }
-    if (part.triangles.empty()) throw InputError(it->urdf, "visual", "the part has no visual geometry to draw");
-    a.parts.push_back(std::move(part));
+    a.parts.push_back(part_render_mesh(load_urdf(it->urdf, options), it->urdf));
   }
   return a;
 }
@@ -122,7 +101,7 @@ Assets scene_assets(const Scene& scene) {
   for (const auto& f : scene.furniture)
     for (size_t l = 0; l < f.model.links.size(); ++l)
       for (const auto& g : f.model.links[l].visuals) {
-        RenderMesh m = mesh_of(g);
+        RenderMesh m = geometry_render_mesh(g);
         if (m.triangles.empty()) continue;
         const Pose pose = f.link_poses[l] * g.origin;
         Eigen::AlignedBox3d box;
@@ -136,21 +115,7 @@ Assets scene_assets(const Scene& scene) {
         }
         a.furniture.push_back({std::move(m), pose});
       }
-  for (const auto& o : scene.objects) {
-    RenderMesh part;
-    for (const auto& g : o.model.links.front().visuals) {
-      RenderMesh m = mesh_of(g);
-      if (m.triangles.empty()) continue;
-      if (part.triangles.empty()) {
-        part = std::move(m);
-        for (auto& v : part.vertices) v = g.origin.cast<float>() * v;
-      } else {
-        part.append(m, g.origin);
-      }
-    }
-    if (part.triangles.empty()) throw InputError(o.id, "visual", "the part has no visual geometry to draw");
-    a.parts.push_back(std::move(part));
-  }
+  for (const auto& o : scene.objects) a.parts.push_back(part_render_mesh(o.model, o.id));
   std::stable_sort(a.board_tops.begin(), a.board_tops.end(),
                    [](auto& x, auto& y) { return x.second.prod() > y.second.prod(); });
   return a;
@@ -280,6 +245,7 @@ SynthOutput render_demonstration(const SynthOptions& o, const std::string& out_d
   out.camera = (fs::path(out_dir) / "camera.json").string();
   out.scene = (fs::path(out_dir) / "scene.json").string();
   out.truth = (fs::path(out_dir) / "truth.json").string();
+  out.init = (fs::path(out_dir) / "init.json").string();
   VideoWriter writer(out.video, script.fps, camera.image_size, o.fourcc);
   std::vector<BopDetection> bop;
   std::vector<HandFrame> hands;
@@ -364,6 +330,9 @@ SynthOutput render_demonstration(const SynthOptions& o, const std::string& out_d
   save_camera(out.camera, camera);
   save_marker_scene(out.scene, markers);
   save_demonstration(out.truth, truth);
+  TrackerInit init;
+  for (size_t k = 0; k < script.object_ids.size(); ++k) init.parts.push_back({script.object_ids[k], script.poses.front()[k]});
+  save_tracker_init(out.init, init);
   out.events = static_cast<int>(truth.events.size());
   if (o.detections) {
     out.bop_csv = (fs::path(out_dir) / "bop.csv").string();
@@ -397,6 +366,7 @@ SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::stri
   for (size_t k = 0; k < script.object_ids.size(); ++k)
     part_markers.push_back(box_face_markers(bounds[k], kBoxFaceMarkers * static_cast<int>(k)));
   Camera camera = place_camera(script, assets.obstacles, part_markers);
+  if (!o.part_markers) part_markers.assign(part_markers.size(), {});
   add_hand(script, camera.world_T_camera->translation());
   if (o.board && assets.table_top) camera.board = place_board(script, *assets.table_top, assets.table_size, camera, assets.obstacles, extrinsics_board(90));
 
@@ -453,10 +423,12 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
   DemoScript script = make_demo_script(truth, start.objects, bounds, scaled(30));
 
   MarkerIds ids;
-  const std::vector<MarkedObject> marked = cell_part_markers(cell, object_ids(scene), bounds, &ids);
+  std::vector<MarkedObject> marked = cell_part_markers(cell, object_ids(scene), bounds, &ids);
   std::vector<std::vector<ObjectMarker>> part_markers;
   for (const auto& o : marked) part_markers.push_back(o.markers);
   Camera camera = place_camera(script, assets.obstacles, part_markers);
+  if (!ro.part_markers)
+    for (auto& m : marked) m.markers.clear();
   add_hand(script, camera.world_T_camera->translation());
   if (ro.board) {
     // The board's ids must not be read as a part's when both use the same dictionary.

@@ -5,7 +5,8 @@
 // ground truth beside the video. Headless and deterministic for a given seed.
 //
 // Writes into the output folder: video.mp4 (video.mkv for FFV1, video.avi for MJPG), camera.json (demoplan-camera), scene.json
-// (demoplan-marker-scene), truth.json (demoplan-demonstration) and, on request, bop.csv and
+// (demoplan-marker-scene), truth.json (demoplan-demonstration), init.json (demoplan-tracker-init:
+// every part's pose in frame 0, where a model-based tracker starts) and, on request, bop.csv and
 // hands.json (simulated outputs of a 6D pose estimator and of a hand-contact detector).
 #include <atomic>
 #include <functional>
@@ -27,13 +28,14 @@ struct SynthOptions {
   double time_scale = 1.0;   // < 1: a shorter video
   std::string fourcc = "mp4v";
   bool board = true;         // an ArUco board on the table for the camera extrinsics
+  bool part_markers = true;  // false: parts without markers (the camera is placed as with them)
   bool detections = false;   // also write bop.csv and hands.json
   std::function<void(int done, int total)> progress;
   const std::atomic<bool>* cancel = nullptr;
 };
 
 struct SynthOutput {
-  std::string video, camera, scene, truth, bop_csv, hands;
+  std::string video, camera, scene, truth, init, bop_csv, hands;
   int frames = 0;
   int events = 0;
   double fps = 30.0;

@@ -9,7 +9,7 @@
 #include "perception/camera/camera_model.h"
 #include "perception/markers/marker_detector.h"
 #include "perception/synthetic/marker_layout.h"
-#include "perception/synthetic/rasterizer.h"
+#include "perception/render/rasterizer.h"
 
 namespace fs = std::filesystem;
 using namespace demoplan;

@@ -8,7 +8,7 @@
 #include "perception/markers/marker_detector.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/marker_layout.h"
-#include "perception/synthetic/rasterizer.h"
+#include "perception/render/rasterizer.h"
 #include "perception/tracking/marker_pose.h"
 
 namespace fs = std::filesystem;

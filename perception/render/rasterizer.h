@@ -8,7 +8,7 @@
 #include <opencv2/core.hpp>
 
 #include "core/geometry/se3.h"
-#include "perception/synthetic/render_mesh.h"
+#include "perception/render/render_mesh.h"
 
 namespace demoplan::perception {
 

@@ -1,4 +1,4 @@
-#include "perception/synthetic/render_mesh.h"
+#include "perception/render/render_mesh.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "perception/synthetic/rasterizer.h"
+#include "perception/render/rasterizer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,76 @@
+#include "perception/render/part_meshes.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <variant>
+
+#include "core/cell/cell.h"
+#include "core/cell/cell_scene.h"
+#include "core/demo/benchmark_task.h"
+#include "core/error.h"
+
+namespace demoplan::perception {
+
+namespace {
+cv::Vec3f bgr_of(const Eigen::Vector4d& rgba) { return {float(rgba[2] * 255), float(rgba[1] * 255), float(rgba[0] * 255)}; }
+}  // namespace
+
+RenderMesh geometry_render_mesh(const Geometry& g) {
+  if (const auto* b = std::get_if<BoxShape>(&g.shape)) return box_mesh(b->size, bgr_of(g.color));
+  if (const auto* c = std::get_if<CylinderShape>(&g.shape)) return cylinder_mesh(c->radius, c->length, bgr_of(g.color));
+  if (const auto* m = std::get_if<MeshShape>(&g.shape); m && m->mesh) return render_mesh(*m->mesh, m->scale, Pose::Identity());
+  return {};
+}
+
+RenderMesh part_render_mesh(const RobotModel& model, const std::string& name) {
+  RenderMesh part;
+  if (!model.links.empty())
+    for (const auto& g : model.links.front().visuals) {
+      RenderMesh m = geometry_render_mesh(g);
+      if (m.triangles.empty()) continue;
+      if (part.triangles.empty()) {
+        part = std::move(m);
+        if (!g.origin.isApprox(Pose::Identity()))
+          for (auto& v : part.vertices) v = g.origin.cast<float>() * v;
+      } else {
+        part.append(m, g.origin);
+      }
+    }
+  if (part.triangles.empty()) throw InputError(name, "visual", "the part has no visual geometry to draw");
+  return part;
+}
+
+std::vector<RenderMesh> marker_scene_part_meshes(const MarkerScene& scene, const std::string& scene_file,
+                                                 const std::string& data_dir) {
+  MeshCache cache;
+  std::vector<RenderMesh> meshes;
+  if (!scene.cell.empty()) {
+    const auto cell_file = std::filesystem::path(scene_file).parent_path() / scene.cell;
+    CellSceneOptions options;
+    options.data_dir = data_dir;
+    options.load_visual_meshes = true;
+    options.mesh_cache = &cache;
+    const Scene cell_scene = build_cell_scene(load_cell(cell_file.string()), options);
+    for (const auto& o : scene.objects) {
+      const auto it = std::find_if(cell_scene.objects.begin(), cell_scene.objects.end(), [&](auto& s) { return s.id == o.id; });
+      if (it == cell_scene.objects.end())
+        throw InputError(scene_file, "objects", "object '" + o.id + "' is not a part of the cell " + cell_file.string());
+      meshes.push_back(part_render_mesh(it->model, o.id));
+    }
+    return meshes;
+  }
+  if (scene.task.empty()) throw InputError(scene_file, "task", "the scene names neither a task nor a cell: no part models");
+  const BenchmarkTask task = load_benchmark_task(data_dir, scene.task);
+  UrdfOptions options;
+  options.load_visual_meshes = true;
+  options.mesh_cache = &cache;
+  for (const auto& o : scene.objects) {
+    const auto it = std::find_if(task.objects.begin(), task.objects.end(), [&](auto& t) { return t.id == o.id; });
+    if (it == task.objects.end())
+      throw InputError(scene_file, "objects", "object '" + o.id + "' is not an object of task " + scene.task);
+    meshes.push_back(part_render_mesh(load_urdf(it->urdf, options), o.id));
+  }
+  return meshes;
+}
+
+}  // namespace demoplan::perception

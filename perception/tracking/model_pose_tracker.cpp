@@ -1,0 +1,180 @@
+#include "perception/tracking/model_pose_tracker.h"
+
+#include <algorithm>
+#include <future>
+#include <stdexcept>
+#include <utility>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/error.h"
+#include "perception/render/part_meshes.h"
+#include "perception/render/rasterizer.h"
+
+namespace demoplan::perception {
+
+struct ModelPoseTracker::State {
+  PinholeIntrinsics intrinsics;
+  cv::Size image_size;
+  Pose world_T_camera = Pose::Identity();
+  cv::Mat undistort_x, undistort_y;  // empty without distortion
+  std::vector<Pose> camera_T_part;
+  std::vector<ColorHistograms> colors;
+  std::vector<double> reference_contrast;  // running mean of each part's accepted contrast
+  std::vector<RenderMesh> silhouettes;  // untextured meshes for the occlusion map
+  PoseTracks tracks;
+  bool started = false;  // the init frame has been seen
+};
+
+ModelPoseTracker::ModelPoseTracker(std::vector<ModelPart> parts, TrackerInit init, std::string init_source,
+                                   const ModelTrackerOptions& options)
+    : models_(std::move(parts)), init_(std::move(init)), options_(options) {
+  for (const auto& m : models_) {
+    if (!init_.find(m.id)) throw InputError(init_source, "parts", "no starting pose for part '" + m.id + "'");
+    if (m.mesh.triangles.empty()) throw InputError(m.id, "mesh", "the part has no mesh to track");
+    const Eigen::AlignedBox3f b = m.mesh.bounds();
+    parts_.push_back({m.id, m.planning, Eigen::AlignedBox3d(b.min().cast<double>(), b.max().cast<double>())});
+  }
+}
+
+ModelPoseTracker::~ModelPoseTracker() = default;
+
+void ModelPoseTracker::start(const TrackingStart& start) {
+  if (contours_.empty()) {
+    // The silhouettes of every part from every direction: once, the parts in parallel.
+    std::vector<std::future<std::unique_ptr<ContourModel>>> jobs;
+    for (const auto& m : models_)
+      jobs.push_back(std::async(std::launch::async, [&m, this] { return std::make_unique<ContourModel>(m.mesh, options_.contour); }));
+    for (auto& j : jobs) contours_.push_back(j.get());
+  }
+  state_ = std::make_unique<State>();
+  State& s = *state_;
+  const Camera& c = start.camera;
+  if (!c.world_T_camera) throw std::logic_error("ModelPoseTracker::start without the camera pose");
+  s.world_T_camera = *c.world_T_camera;
+  s.image_size = c.image_size;
+  s.intrinsics = {c.fx, c.fy, c.cx, c.cy};
+  bool distorted = false;
+  for (double d : c.distortion) distorted = distorted || d != 0.0;
+  if (distorted)
+    cv::initUndistortRectifyMap(c.camera_matrix(), c.distortion_coefficients(), cv::Mat(), c.camera_matrix(), c.image_size,
+                                CV_16SC2, s.undistort_x, s.undistort_y);
+  s.camera_T_part.assign(models_.size(), Pose::Identity());
+  s.colors.assign(models_.size(), ColorHistograms());
+  s.reference_contrast.assign(models_.size(), 0.0);
+  for (const auto& m : models_) {
+    RenderMesh flat;
+    flat.vertices = m.mesh.vertices;
+    flat.triangles = m.mesh.triangles;
+    s.silhouettes.push_back(std::move(flat));
+  }
+  s.tracks.fps = start.fps;
+  for (const auto& p : parts_) {
+    s.tracks.object_ids.push_back(p.id);
+    s.tracks.planning.push_back(p.planning);
+  }
+  s.tracks.samples.assign(parts_.size(), {});
+  s.tracks.resize(std::max(start.frames, 0));
+}
+
+OcclusionMap ModelPoseTracker::occlusion_map() const {
+  const State& s = *state_;
+  // Only needed where two parts' projections may overlap: their bounding circles.
+  struct Disc {
+    Eigen::Vector2d centre;
+    double radius;
+  };
+  std::vector<Disc> discs;
+  for (size_t k = 0; k < models_.size(); ++k) {
+    const Eigen::Vector3d c = s.camera_T_part[k] * contours_[k]->centre();
+    if (c.z() < 0.05) continue;
+    const double r = contours_[k]->radius() * s.intrinsics.fx / c.z() * 1.2;
+    discs.push_back({{s.intrinsics.fx * c.x() / c.z(), s.intrinsics.fy * c.y() / c.z()}, r});
+  }
+  bool overlap = false;
+  for (size_t a = 0; a < discs.size() && !overlap; ++a)
+    for (size_t b = a + 1; b < discs.size() && !overlap; ++b)
+      overlap = (discs[a].centre - discs[b].centre).norm() < discs[a].radius + discs[b].radius;
+  OcclusionMap map;
+  if (!overlap) return map;
+  const double k = map.scale;
+  const cv::Size size(static_cast<int>(s.image_size.width * k) + 1, static_cast<int>(s.image_size.height * k) + 1);
+  Rasterizer r(size, s.intrinsics.fx * k, s.intrinsics.fy * k, (s.intrinsics.cx + 0.5) * k - 0.5,
+               (s.intrinsics.cy + 0.5) * k - 0.5, Pose::Identity());
+  r.clear({0, 0, 0}, {0, 0, 0});
+  map.labels = cv::Mat::zeros(size, CV_8U);
+  cv::Mat before;
+  for (size_t p = 0; p < models_.size(); ++p) {
+    r.depth().copyTo(before);
+    r.draw(s.silhouettes[p], s.camera_T_part[p]);
+    map.labels.setTo(static_cast<int>(p + 1), r.depth() < before);
+  }
+  map.depth = r.depth().clone();
+  return map;
+}
+
+std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& input) {
+  if (!state_) throw std::logic_error("ModelPoseTracker::track before start");
+  State& s = *state_;
+  if (frame < init_.frame) return {};
+  if (frame >= s.tracks.frames) s.tracks.resize(frame + 1);
+  if (input.empty()) return {};
+  cv::Mat image = input;
+  if (!s.undistort_x.empty()) cv::remap(input, image, s.undistort_x, s.undistort_y, cv::INTER_LINEAR);
+  if (!s.started) {
+    // The starting poses, and what the parts and their surroundings look like there.
+    for (size_t k = 0; k < models_.size(); ++k)
+      s.camera_T_part[k] = s.world_T_camera.inverse() * init_.find(models_[k].id)->world_T_object;
+    const OcclusionMap map = occlusion_map();
+    for (size_t k = 0; k < models_.size(); ++k)
+      learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], map, static_cast<int>(k), s.colors[k],
+                   options_.region);
+    for (size_t k = 0; k < models_.size(); ++k)
+      s.reference_contrast[k] = track_region(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
+                                             static_cast<int>(k), options_.region).contrast;
+    s.started = true;
+  }
+  const OcclusionMap map = occlusion_map();
+  std::vector<PoseObservation> seen;
+  std::vector<bool> found(models_.size(), false), learn(models_.size(), false);
+  for (size_t k = 0; k < models_.size(); ++k) {
+    const RegionFrameResult r = track_region(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
+                                             static_cast<int>(k), options_.region);
+    const double used = r.lines ? static_cast<double>(r.used_lines) / r.lines : 0.0;
+    // Not seen well enough (an occluder over it, out of the picture): keep the last pose. The
+    // bar is relative to how the part has stood out so far, as parts differ from their
+    // surroundings more or less.
+    const double bar = std::max(options_.lost_contrast, options_.relative_contrast * s.reference_contrast[k]);
+    if (r.contrast < bar || used < options_.lost_used_fraction) continue;
+    learn[k] = r.contrast >= options_.learn_contrast * s.reference_contrast[k];
+    s.reference_contrast[k] += options_.reference_rate * (r.contrast - s.reference_contrast[k]);
+    s.camera_T_part[k] = r.camera_T_part;
+    found[k] = true;
+    PoseSample& sample = s.tracks.samples[k][frame];
+    sample.valid = true;
+    sample.pose = s.world_T_camera * r.camera_T_part;
+    sample.confidence = std::clamp(r.contrast / 0.5, 0.0, 1.0) * std::min(1.0, used / 0.5);
+    seen.push_back({static_cast<int>(k), sample});
+  }
+  const OcclusionMap after = occlusion_map();
+  for (size_t k = 0; k < models_.size(); ++k)
+    if (learn[k])
+      learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], after, static_cast<int>(k), s.colors[k],
+                   options_.region);
+  return seen;
+}
+
+PoseTracks ModelPoseTracker::finish() {
+  if (!state_) throw std::logic_error("ModelPoseTracker::finish before start");
+  return state_->tracks;
+}
+
+std::vector<ModelPart> model_parts(const MarkerScene& scene, const std::string& scene_file, const std::string& data_dir) {
+  std::vector<RenderMesh> meshes = marker_scene_part_meshes(scene, scene_file, data_dir);
+  std::vector<ModelPart> parts;
+  for (size_t k = 0; k < scene.objects.size(); ++k) parts.push_back({scene.objects[k].id, scene.objects[k].planning, std::move(meshes[k])});
+  return parts;
+}
+
+}  // namespace demoplan::perception

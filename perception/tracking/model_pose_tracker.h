@@ -1,0 +1,71 @@
+#pragma once
+// The pose tracker that needs no markers: each part's mesh and its pose in one frame (an
+// operator's placement or a pose estimator's) are enough. Every part is followed from frame to
+// frame by region-based tracking (region_pose.h) against colour models it learns as it goes;
+// parts hide each other's contour lines where the current estimates put them in front, and a
+// part whose silhouette no longer stands out (a hand over it, out of the picture) keeps its last
+// pose, reported invalid, and is looked for there again in the next frame.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "perception/markers/marker_scene.h"
+#include "perception/render/render_mesh.h"
+#include "perception/tracking/color_histograms.h"
+#include "perception/tracking/contour_model.h"
+#include "perception/tracking/pose_tracker.h"
+#include "perception/tracking/region_pose.h"
+#include "perception/tracking/tracker_init.h"
+
+namespace demoplan::perception {
+
+struct ModelPart {
+  std::string id;
+  bool planning = true;
+  RenderMesh mesh;  // part frame, metres
+};
+
+struct ModelTrackerOptions {
+  ContourModelOptions contour;
+  RegionTrackingOptions region;
+  // A part counts as seen in a frame when its contrast (region_pose.h) reaches both bars and
+  // enough of its contour's lines find an edge; only then does its pose move.
+  double lost_contrast = 0.08;
+  double relative_contrast = 0.7;    // of the part's running mean contrast
+  double lost_used_fraction = 0.15;  // of the contour's lines
+  double learn_contrast = 0.85;      // of the running mean: the colour models learn from the frame
+  double reference_rate = 0.1;       // of the running mean
+};
+
+class ModelPoseTracker final : public PoseTracker {
+public:
+  // Throws InputError when `init` lacks a part's pose (naming the part).
+  ModelPoseTracker(std::vector<ModelPart> parts, TrackerInit init, std::string init_source,
+                   const ModelTrackerOptions& options = {});
+  ~ModelPoseTracker() override;
+
+  std::string name() const override { return "model"; }
+  const std::vector<TrackedPart>& parts() const override { return parts_; }
+  void start(const TrackingStart& start) override;
+  std::vector<PoseObservation> track(int frame, const cv::Mat& image) override;
+  PoseTracks finish() override;
+
+private:
+  struct State;
+  OcclusionMap occlusion_map() const;
+
+  std::vector<ModelPart> models_;
+  TrackerInit init_;
+  ModelTrackerOptions options_;
+  std::vector<TrackedPart> parts_;
+  std::vector<std::unique_ptr<ContourModel>> contours_;  // built on the first start()
+  std::unique_ptr<State> state_;
+};
+
+// The parts of a marker scene (markers, if any, are not used) with their meshes from the task or
+// cell the scene names (part_meshes.h).
+std::vector<ModelPart> model_parts(const MarkerScene& scene, const std::string& scene_file, const std::string& data_dir);
+
+}  // namespace demoplan::perception

@@ -1,0 +1,211 @@
+#include "perception/tracking/region_pose.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+
+namespace demoplan::perception {
+
+namespace {
+
+constexpr double kNear = 0.05;       // m: contour points nearer the camera are not used
+constexpr float kOcclusionMargin = 0.01f;  // m
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d S;
+  S << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return S;
+}
+
+// A contour point projected with the pose its line was set up at.
+struct Projected {
+  Eigen::Vector3d part;    // point, part frame
+  Eigen::Vector3d camera;  // point, camera frame
+  Eigen::Vector2d pixel;
+  Eigen::Vector2d normal;  // unit, image
+  double px_per_m = 0.0;   // image scale at the point
+};
+
+bool project(const ContourPoint& cp, const Pose& T, const PinholeIntrinsics& K, Projected& p) {
+  p.part = cp.position.cast<double>();
+  p.camera = T * p.part;
+  if (p.camera.z() < kNear) return false;
+  const double iz = 1.0 / p.camera.z();
+  p.pixel = {K.fx * p.camera.x() * iz + K.cx, K.fy * p.camera.y() * iz + K.cy};
+  const Eigen::Vector3d n = T.linear() * cp.normal.cast<double>();
+  // Image direction of the normal: the projection's Jacobian applied to it.
+  const Eigen::Vector2d d(K.fx * iz * (n.x() - p.camera.x() * iz * n.z()), K.fy * iz * (n.y() - p.camera.y() * iz * n.z()));
+  if (d.norm() < 1e-9) return false;
+  p.normal = d.normalized();
+  p.px_per_m = 0.5 * (K.fx + K.fy) * iz;
+  return true;
+}
+
+bool pixel_at(const cv::Mat& image, const Eigen::Vector2d& q, cv::Vec3b& out) {
+  const int x = static_cast<int>(std::lround(q.x())), y = static_cast<int>(std::lround(q.y()));
+  if (x < 0 || y < 0 || x >= image.cols || y >= image.rows) return false;
+  out = image.at<cv::Vec3b>(y, x);
+  return true;
+}
+
+// One correspondence line: the edge's position along the normal as a mean and a variance (px).
+struct Line {
+  Eigen::Vector3d part;
+  Eigen::Vector2d centre, normal;
+  double mean = 0.0, variance = 1.0;
+};
+
+struct Pass {
+  std::vector<Line> lines;
+  double contrast_sum = 0.0;
+  int contrast_lines = 0;
+};
+
+Pass correspondence_pass(const cv::Mat& image, const PinholeIntrinsics& K, const ContourView& view,
+                         const ColorHistograms& colors, const Pose& T, const OcclusionMap& occlusion, int part,
+                         int scale, const RegionTrackingOptions& o) {
+  Pass pass;
+  const int N = o.line_samples, W = std::min(o.window, N - 1), M = N - W;
+  std::vector<float> pf(2 * N);
+  std::vector<double> log_p(2 * M + 1);
+  for (const auto& cp : view.points) {
+    Projected p;
+    if (!project(cp, T, K, p)) continue;
+    const double inner_px = cp.inner * p.px_per_m, outer_px = cp.outer * p.px_per_m;
+    bool ok = true;
+    for (int i = -N; i < N && ok; ++i) {
+      const double x = (i + 0.5) * scale;
+      const Eigen::Vector2d q = p.pixel + x * p.normal;
+      cv::Vec3b c;
+      if (!pixel_at(image, q, c)) ok = false;
+      else if (!occlusion.empty() && occlusion.hides(q.x(), q.y(), part, static_cast<float>(p.camera.z()))) ok = false;
+      else pf[i + N] = colors.foreground_probability(c);
+    }
+    if (!ok) continue;
+    // Each candidate edge position d_k = k * scale, scored on the 2W samples around it: part
+    // colours before the edge, surroundings after it, through a smoothed step.
+    double best = -1e300;
+    for (int k = -M; k <= M; ++k) {
+      double s = 0.0;
+      for (int i = k - W; i < k + W; ++i) {
+        const double x = (i + 0.5) * scale;
+        if (x < -inner_px || x > outer_px + scale) continue;  // beyond the silhouette's own extent
+        const double hf = 0.5 - o.step_amplitude * std::tanh((i + 0.5 - k) / (2.0 * o.step_slope));
+        const double f = pf[i + N];
+        s += std::log(hf * f + (1.0 - hf) * (1.0 - f));
+      }
+      log_p[k + M] = s;
+      best = std::max(best, s);
+    }
+    double sum = 0.0, mean = 0.0;
+    for (int k = -M; k <= M; ++k) {
+      const double w = std::exp(log_p[k + M] - best);
+      sum += w;
+      mean += w * k * scale;
+    }
+    mean /= sum;
+    double variance = 0.0;
+    for (int k = -M; k <= M; ++k) variance += std::exp(log_p[k + M] - best) / sum * std::pow(k * scale - mean, 2);
+    variance = std::max(variance, 0.25 * scale * scale);
+    // A flat distribution: the line shows no edge (all part, all surroundings, or an occluder).
+    if (std::sqrt(variance) > 0.5 * M * scale) continue;
+    pass.lines.push_back({p.part, p.pixel, p.normal, mean, variance});
+    // Contrast at the line's centre: the part's probability inside minus outside.
+    double in = 0.0, out = 0.0;
+    for (int i = 0; i < N; ++i) in += pf[N - 1 - i], out += pf[N + i];
+    pass.contrast_sum += (in - out) / N;
+    ++pass.contrast_lines;
+  }
+  return pass;
+}
+
+// Gauss-Newton steps moving the contour points' projections to the lines' edge estimates.
+Pose newton_steps(const Pass& pass, const PinholeIntrinsics& K, const Eigen::Vector3d& centre, Pose T,
+                  const RegionTrackingOptions& o) {
+  for (int step = 0; step < o.newton_steps; ++step) {
+    Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
+    const Eigen::Matrix3d R = T.linear();
+    for (const auto& l : pass.lines) {
+      const Eigen::Vector3d X = T * l.part;
+      if (X.z() < kNear) continue;
+      const double iz = 1.0 / X.z();
+      const Eigen::Vector2d u(K.fx * X.x() * iz + K.cx, K.fy * X.y() * iz + K.cy);
+      Eigen::Matrix<double, 2, 3> Jp;
+      Jp << K.fx * iz, 0, -K.fx * X.x() * iz * iz, 0, K.fy * iz, -K.fy * X.y() * iz * iz;
+      Eigen::Matrix<double, 3, 6> Jx;
+      Jx.leftCols<3>() = -R * skew(l.part - centre);
+      Jx.rightCols<3>() = R;
+      const Eigen::Matrix<double, 1, 6> J = l.normal.transpose() * Jp * Jx;
+      const double r = l.normal.dot(u - l.centre) - l.mean;
+      // Cauchy weights: lines whose edge lies far off the others' consensus (an occluder's
+      // edge, a hand's) pull less.
+      const double w = 1.0 / (l.variance * (1.0 + r * r / (o.robust_scale * o.robust_scale * l.variance)));
+      A.noalias() += w * J.transpose() * J;
+      b.noalias() += w * r * J.transpose();
+    }
+    for (int i = 0; i < 3; ++i) A(i, i) += o.tikhonov_rotation, A(i + 3, i + 3) += o.tikhonov_translation;
+    const Eigen::Matrix<double, 6, 1> delta = -A.ldlt().solve(b);
+    if (!delta.allFinite()) break;
+    const Eigen::Vector3d w = delta.head<3>();
+    Pose M = Pose::Identity();
+    if (w.norm() > 1e-12) M.linear() = Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix();
+    M.translation() = centre - M.linear() * centre + delta.tail<3>();
+    T = T * M;
+  }
+  return T;
+}
+
+}  // namespace
+
+bool OcclusionMap::hides(double x, double y, int part, float z) const {
+  const int u = static_cast<int>(x * scale), v = static_cast<int>(y * scale);
+  if (u < 0 || v < 0 || u >= labels.cols || v >= labels.rows) return false;
+  const int label = labels.at<uchar>(v, u);
+  return label != 0 && label != part + 1 && depth.at<float>(v, u) < z - kOcclusionMargin;
+}
+
+RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& K, const ContourModel& model,
+                               const ColorHistograms& colors, const Pose& camera_T_part, const OcclusionMap& occlusion,
+                               int part, const RegionTrackingOptions& o) {
+  RegionFrameResult result;
+  Pose T = camera_T_part;
+  for (const int scale : o.scales) {
+    const Eigen::Vector3d towards_camera = T.inverse().translation() - model.centre();
+    const ContourView& view = model.nearest_view(towards_camera);
+    const Pass pass = correspondence_pass(image, K, view, colors, T, occlusion, part, scale, o);
+    result.lines = static_cast<int>(view.points.size());
+    result.used_lines = static_cast<int>(pass.lines.size());
+    result.contrast = pass.contrast_lines ? pass.contrast_sum / pass.contrast_lines : 0.0;
+    if (pass.lines.size() < 6) continue;  // too little to fix six degrees of freedom
+    T = newton_steps(pass, K, model.centre(), T, o);
+  }
+  result.camera_T_part = T;
+  return result;
+}
+
+void learn_colors(const cv::Mat& image, const PinholeIntrinsics& K, const ContourModel& model, const Pose& T,
+                  const OcclusionMap& occlusion, int part, ColorHistograms& colors, const RegionTrackingOptions& o) {
+  const ContourView& view = model.nearest_view(T.inverse().translation() - model.centre());
+  for (const auto& cp : view.points) {
+    Projected p;
+    if (!project(cp, T, K, p)) continue;
+    const double inner_px = cp.inner * p.px_per_m, outer_px = cp.outer * p.px_per_m;
+    // From the pixels next to the edge on: with chroma subsampled and blurred by a codec, those
+    // carry mixed colours, and each side must learn its own (else the silhouette looks a pixel
+    // larger than it is, for parts whose colours stand out more than their surroundings').
+    for (int i = 1; i <= o.learn_pixels; ++i) {
+      cv::Vec3b c;
+      const Eigen::Vector2d qi = p.pixel - (i - 0.5) * p.normal, qo = p.pixel + (i - 0.5) * p.normal;
+      const auto z = static_cast<float>(p.camera.z());
+      if (i < inner_px && pixel_at(image, qi, c) && (occlusion.empty() || !occlusion.hides(qi.x(), qi.y(), part, z)))
+        colors.add_foreground(c);
+      if (i < outer_px && pixel_at(image, qo, c) && (occlusion.empty() || !occlusion.hides(qo.x(), qo.y(), part, z)))
+        colors.add_background(c);
+    }
+  }
+  colors.update();
+}
+
+}  // namespace demoplan::perception

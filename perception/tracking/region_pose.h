@@ -1,0 +1,63 @@
+#pragma once
+// One frame of region-based pose tracking for one part (after SRT3D, Stoiber et al. 2022):
+// lines through the projected contour of the part along its normals; on each line the
+// probability of every position of the silhouette's edge, from the part's and its
+// surroundings' colour models; then Gauss-Newton steps that move the projected contour to where
+// the edges most probably are. Coarse to fine: long lines of coarse samples first.
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "core/geometry/se3.h"
+#include "perception/tracking/color_histograms.h"
+#include "perception/tracking/contour_model.h"
+
+namespace demoplan::perception {
+
+struct PinholeIntrinsics {
+  double fx = 1000, fy = 1000, cx = 640, cy = 360;
+};
+
+// Which tracked part covers each pixel and how far away (rendered at the current estimates):
+// lines of one part crossing a nearer part are left out.
+struct OcclusionMap {
+  cv::Mat labels;  // CV_8U, 0: no part, k + 1: part k
+  cv::Mat depth;   // CV_32F, m
+  double scale = 0.25;  // map pixels per image pixel
+
+  bool empty() const { return labels.empty(); }
+  // True when a part other than `part` is in front of depth `z` at image pixel (x, y).
+  bool hides(double x, double y, int part, float z) const;
+};
+
+struct RegionTrackingOptions {
+  std::vector<int> scales{6, 4, 2, 2, 1, 1};  // px per line sample, one correspondence pass each
+  int newton_steps = 2;                 // per pass
+  int line_samples = 10;                // per side of the contour
+  int window = 4;                       // samples per side scored for one edge position
+  double step_amplitude = 0.43;         // of the smoothed step from part to surroundings
+  double step_slope = 0.5;              // samples
+  double robust_scale = 3.0;            // standard deviations where a line's weight halves
+  double tikhonov_rotation = 1e3;       // regularisation of each step (rad^-2, in the data's units)
+  double tikhonov_translation = 3e4;    // (m^-2)
+  int learn_pixels = 12;                // each side of the contour, for the colour models
+};
+
+struct RegionFrameResult {
+  Pose camera_T_part = Pose::Identity();
+  int lines = 0;         // contour points of the view
+  int used_lines = 0;    // inside the image, not hidden, with an edge found (last pass)
+  double contrast = 0.0;  // mean P(part) inside minus outside the contour, -1..1 (last pass)
+};
+
+// Refines `camera_T_part` on `image` (BGR, undistorted). `part` is the part's label in `occlusion`.
+RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& camera, const ContourModel& model,
+                               const ColorHistograms& colors, const Pose& camera_T_part, const OcclusionMap& occlusion,
+                               int part, const RegionTrackingOptions& options = {});
+
+// Adds the pixels along the contour at `camera_T_part` to the colour models and updates them.
+void learn_colors(const cv::Mat& image, const PinholeIntrinsics& camera, const ContourModel& model,
+                  const Pose& camera_T_part, const OcclusionMap& occlusion, int part, ColorHistograms& colors,
+                  const RegionTrackingOptions& options = {});
+
+}  // namespace demoplan::perception

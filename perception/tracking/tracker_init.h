@@ -1,0 +1,32 @@
+#pragma once
+// Where each part is in one frame of the video: what a model-based tracker starts from (the
+// operator places the parts over that frame, or a pose estimator gives them).
+//
+// File "demoplan-tracker-init" version 1 (JSON):
+//   {"format": "demoplan-tracker-init", "version": 1, "frame": 0,
+//    "parts": [{"id": "YCBV_02", "world_T_object": {"t": [x, y, z], "q": [qx, qy, qz, qw]}}]}
+// Poses in metres in the world frame of the camera file (the same as the scene's).
+#include <string>
+#include <vector>
+
+#include "core/geometry/se3.h"
+
+namespace demoplan::perception {
+
+struct PartStart {
+  std::string id;
+  Pose world_T_object = Pose::Identity();
+};
+
+struct TrackerInit {
+  int frame = 0;
+  std::vector<PartStart> parts;
+
+  const PartStart* find(const std::string& id) const;
+};
+
+// Throws InputError naming the file and field: malformed poses, duplicate ids, a negative frame.
+TrackerInit load_tracker_init(const std::string& path);
+void save_tracker_init(const std::string& path, const TrackerInit& init);
+
+}  // namespace demoplan::perception

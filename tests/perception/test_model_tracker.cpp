@@ -1,0 +1,153 @@
+// The model-based tracker: its silhouette model of a mesh, one frame of region-based tracking on
+// a rendered image from a displaced start, the tracker start file, and the whole tracker on a
+// synthetic video without markers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "perception/camera/camera_model.h"
+#include "perception/events/evaluation.h"
+#include "perception/extraction/extract_demonstration.h"
+#include "perception/markers/marker_scene.h"
+#include "perception/render/rasterizer.h"
+#include "perception/synthetic/synthetic_video.h"
+#include "perception/tracking/contour_model.h"
+#include "perception/tracking/model_pose_tracker.h"
+#include "perception/tracking/region_pose.h"
+#include "perception/tracking/tracker_init.h"
+
+namespace fs = std::filesystem;
+using namespace demoplan;
+using namespace demoplan::perception;
+
+namespace {
+
+const Eigen::Vector3d kBox(0.06, 0.10, 0.16);
+
+// The box's own distance to a point: 0 on its surface.
+double box_surface_distance(const Eigen::Vector3d& p) {
+  const Eigen::Vector3d q = p.cwiseAbs() - kBox / 2;
+  const double outside = q.cwiseMax(0.0).norm();
+  return outside > 0 ? outside : -q.maxCoeff();
+}
+
+TEST(ContourModel, PointsLieOnTheSilhouetteOfTheMesh) {
+  ContourModelOptions o;
+  o.views = 60;
+  const ContourModel model(box_mesh(kBox, {0, 0, 255}), o);
+  ASSERT_EQ(model.views().size(), 60u);
+  EXPECT_NEAR(model.radius(), kBox.norm() / 2, 1e-6);
+  for (const auto& v : model.views()) {
+    EXPECT_GT(v.points.size(), 150u);
+    for (const auto& p : v.points) {
+      // On the surface (within a rendered pixel: about 1 mm here) ...
+      EXPECT_LT(std::abs(box_surface_distance(p.position.cast<double>())), 1.5e-3);
+      // ... with a normal across the line of sight, pointing away from the centre's projection.
+      EXPECT_LT(std::abs(p.normal.dot(v.direction)), 1e-5);
+      const Eigen::Vector3f off_axis = p.position - p.position.dot(v.direction) * v.direction;
+      EXPECT_GT(p.normal.dot(off_axis), 0.f);
+      EXPECT_GT(p.inner, 0.f);
+    }
+  }
+  const Eigen::Vector3d up(0.1, 0.2, 1.0);
+  const ContourView& nearest = model.nearest_view(up);
+  for (const auto& v : model.views()) EXPECT_LE(v.direction.dot(up.normalized().cast<float>()), nearest.direction.dot(up.normalized().cast<float>()));
+}
+
+TEST(RegionTracking, RecoversAPoseFromADisplacedStart) {
+  // A red box before a grey-blue gradient, 0.9 m from the camera; tracking starts 12 mm and
+  // 4 degrees away.
+  const PinholeIntrinsics K{900, 900, 320, 240};
+  Pose truth = Pose::Identity();
+  truth.linear() = (Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(-0.4, Eigen::Vector3d::UnitX())).toRotationMatrix();
+  truth.translation() << 0.02, -0.01, 0.9;
+  const RenderMesh box = box_mesh(kBox, {40, 40, 200});
+  Rasterizer r(cv::Size(640, 480), K.fx, K.fy, K.cx, K.cy, Pose::Identity());
+  r.clear({180, 160, 150}, {120, 110, 100});
+  r.draw(box, truth);
+  const cv::Mat image = r.color().clone();
+
+  ContourModelOptions co;
+  co.views = 400;
+  const ContourModel model(box, co);
+  ColorHistograms colors;
+  learn_colors(image, K, model, truth, {}, 0, colors);
+  ASSERT_TRUE(colors.initialised());
+  const Eigen::Vector3d centre = *r.project(truth.translation());
+  EXPECT_GT(colors.foreground_probability(image.at<cv::Vec3b>(int(centre.y()), int(centre.x()))), 0.9f);  // the box, shaded
+  int y = int(centre.y());
+  while (y > 0 && std::isfinite(r.depth().at<float>(y, int(centre.x())))) --y;
+  EXPECT_LT(colors.foreground_probability(image.at<cv::Vec3b>(y - 5, int(centre.x()))), 0.1f);  // above the box
+
+  Pose start = truth;
+  start.translation() += Eigen::Vector3d(0.012, -0.008, 0.0);
+  start.linear() = Eigen::AngleAxisd(4.0 * M_PI / 180, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix() * start.linear();
+  const RegionFrameResult result = track_region(image, K, model, colors, start, {}, 0);
+  const Pose error = truth.inverse() * result.camera_T_part;
+  EXPECT_LT((result.camera_T_part.translation() - truth.translation()).head<2>().norm(), 1.5e-3);  // across the view
+  EXPECT_LT(std::abs(result.camera_T_part.translation().z() - truth.translation().z()), 8e-3);    // depth, from the size
+  EXPECT_LT(Eigen::AngleAxisd(error.linear()).angle() * 180 / M_PI, 1.5);
+  EXPECT_GT(result.contrast, 0.8);
+  EXPECT_GT(result.used_lines, result.lines / 2);
+}
+
+TEST(TrackerInit, RoundTripsAndNamesWhatIsWrong) {
+  const fs::path dir = fs::temp_directory_path() / ("demoplan_tracker_init_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  TrackerInit init;
+  init.frame = 3;
+  Pose p = Pose::Identity();
+  p.translation() << 0.1, 0.2, 0.3;
+  init.parts.push_back({"YCBV_02", p});
+  save_tracker_init((dir / "init.json").string(), init);
+  const TrackerInit back = load_tracker_init((dir / "init.json").string());
+  EXPECT_EQ(back.frame, 3);
+  ASSERT_NE(back.find("YCBV_02"), nullptr);
+  EXPECT_TRUE(back.find("YCBV_02")->world_T_object.isApprox(p, 1e-12));
+  EXPECT_EQ(back.find("YCBV_05"), nullptr);
+
+  std::ofstream((dir / "twice.json").string())
+      << R"({"format": "demoplan-tracker-init", "version": 1, "parts": [
+        {"id": "A", "world_T_object": {"t": [0, 0, 0], "q": [0, 0, 0, 1]}},
+        {"id": "A", "world_T_object": {"t": [0, 0, 0], "q": [0, 0, 0, 1]}}]})";
+  try {
+    load_tracker_init((dir / "twice.json").string());
+    FAIL() << "a part given twice was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("parts[1].id"), std::string::npos) << e.what();
+  }
+  // A part of the scene the start file does not place: named.
+  try {
+    ModelPoseTracker tracker({{"YCBV_05", true, box_mesh(kBox, {0, 0, 255})}}, back, "init.json");
+    FAIL() << "a part without a start pose was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("YCBV_05"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+// shelf_0 without markers: one part carried from the table to the shelf.
+TEST(ModelTracker, FollowsThePartsOfAVideoWithoutMarkers) {
+  const fs::path dir = fs::temp_directory_path() / ("demoplan_model_tracker_" + std::to_string(::getpid()));
+  SynthOptions o;
+  o.data_dir = DEMOPLAN_DATA_DIR;
+  o.task = "shelf_0";
+  o.part_markers = false;
+  const SynthOutput s = write_synthetic_demonstration(o, dir.string());
+  const MarkerScene scene = load_marker_scene(s.scene);
+  for (const auto& obj : scene.objects) EXPECT_TRUE(obj.markers.empty());
+  ModelPoseTracker tracker(model_parts(scene, s.scene, DEMOPLAN_DATA_DIR), load_tracker_init(s.init), s.init);
+  const ExtractionResult r = extract_demonstration(s.video, load_camera(s.camera), tracker, scene.task);
+  EXPECT_EQ(r.tracker, "model");
+  const DemonstrationEvaluation e = evaluate_demonstration(r.demonstration, load_demonstration(s.truth), 2);
+  EXPECT_EQ(e.matched, e.truth_events);
+  EXPECT_EQ(e.detected_events, e.truth_events);
+  EXPECT_LT(e.median_translation_error_mm, 10.0);
+  EXPECT_LT(e.median_rotation_error_deg, 3.0);
+  fs::remove_all(dir);
+}
+
+}  // namespace
