@@ -11,6 +11,8 @@
 #include "perception/camera/camera_model.h"
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/extraction/tracks_file.h"
+#include "perception/extraction/tracks_overlay.h"
+#include "perception/render/part_meshes.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/tracking/marker_pose_tracker.h"
 #include "perception/tracking/model_pose_tracker.h"
@@ -22,7 +24,7 @@ namespace {
 
 struct ExtractCliOptions {
   std::string video, camera, scene, detections, hands, out, events = "thresholds";
-  std::string tracker = "markers", init, data_dir;
+  std::string tracker = "markers", init, data_dir, overlay;
   bool board = false;
   bool json = false;
 };
@@ -60,7 +62,8 @@ int run_extract(const ExtractCliOptions& o) {
     if (!std::filesystem::is_regular_file(init))
       throw InputError(init, "", "the model tracker needs every part's pose in the first frame: no such file (use --init)");
     tracker = std::make_unique<perception::ModelPoseTracker>(perception::model_parts(scene, o.scene, o.data_dir),
-                                                             perception::load_tracker_init(init), init);
+                                                             perception::load_tracker_init(init), init,
+                                                             perception::marker_scene_furniture_meshes(scene, o.scene, o.data_dir));
   } else {
     tracker = std::make_unique<perception::MarkerPoseTracker>(scene);
   }
@@ -68,6 +71,12 @@ int run_extract(const ExtractCliOptions& o) {
   save_demonstration(o.out, r.demonstration);
   const std::string tracks = perception::tracks_path_for(o.out);
   perception::save_tracks_file(tracks, r);
+  if (!o.overlay.empty()) {
+    perception::Camera posed = camera;
+    posed.world_T_camera = r.world_T_camera;
+    perception::write_tracks_overlay(o.video, posed, r.raw, perception::marker_scene_part_meshes(scene, o.scene, o.data_dir),
+                                     o.overlay);
+  }
   const auto issues = validate(r.demonstration);
 
   const Demonstration& d = r.demonstration;
@@ -79,7 +88,7 @@ int run_extract(const ExtractCliOptions& o) {
               << d.object_ids[e.object] << "  confidence " << e.confidence << "\n";
   for (const auto& w : r.warnings) std::cerr << "  warning: " << w << "\n";
   for (const auto& i : issues) std::cerr << "  issue: " << i.message << "\n";
-  std::cerr << "  wrote " << o.out << " and " << tracks << "\n";
+  std::cerr << "  wrote " << o.out << " and " << tracks << (o.overlay.empty() ? "" : " and " + o.overlay) << "\n";
   if (o.json) {
     nlohmann::json events = nlohmann::json::array();
     for (const auto& e : d.events)
@@ -133,6 +142,9 @@ Command register_extract_command(CLI::App& app) {
   sub->add_option("--init", o->init,
                   "with --tracker model: every part's pose in the first frame (demoplan-tracker-init JSON); "
                   "default: init.json beside the scene");
+  sub->add_option("--overlay", o->overlay,
+                  "also write the video with each part's outline where its track puts it (green: seen, red: "
+                  "not seen in that frame), e.g. overlay.mp4");
   sub->add_flag("--board-extrinsics", o->board, "find the camera pose from the board even if the camera file gives it");
   sub->add_flag("--json", o->json, "print one JSON object on stdout");
   add_data_dir_option(*sub, o->data_dir);

@@ -8,6 +8,7 @@
 #include "core/cell/cell_scene.h"
 #include "core/demo/benchmark_task.h"
 #include "core/error.h"
+#include "core/model/kinematics.h"
 
 namespace demoplan::perception {
 
@@ -40,21 +41,72 @@ RenderMesh part_render_mesh(const RobotModel& model, const std::string& name) {
   return part;
 }
 
+namespace {
+
+void add_visuals(const RobotModel& model, const PoseVector& link_poses, const std::string& kind,
+                 std::vector<FurnitureMesh>& out) {
+  for (size_t l = 0; l < model.links.size(); ++l)
+    for (const auto& g : model.links[l].visuals) {
+      if (g.color[3] < 0.5) continue;  // see-through
+      RenderMesh m = geometry_render_mesh(g);
+      if (m.triangles.empty()) continue;
+      FurnitureMesh f{std::move(m), link_poses[l] * g.origin, link_poses[l], kind, std::nullopt};
+      if (const auto* b = std::get_if<BoxShape>(&g.shape)) f.box = b->size;
+      out.push_back(std::move(f));
+    }
+}
+
+Scene cell_scene_with_visuals(const MarkerScene& scene, const std::string& scene_file, const std::string& data_dir,
+                              MeshCache& cache, std::string& cell_file) {
+  cell_file = (std::filesystem::path(scene_file).parent_path() / scene.cell).string();
+  CellSceneOptions options;
+  options.data_dir = data_dir;
+  options.load_visual_meshes = true;
+  options.mesh_cache = &cache;
+  return build_cell_scene(load_cell(cell_file), options);
+}
+
+}  // namespace
+
+std::vector<FurnitureMesh> furniture_meshes(const BenchmarkTask& task) {
+  std::vector<FurnitureMesh> out;
+  for (const auto& f : task.furniture) {
+    const RobotModel model = load_urdf(f.urdf);
+    PoseVector links;
+    forward_kinematics(model, Eigen::VectorXd::Zero(model.nq), Pose::Identity(), links);
+    add_visuals(model, links, f.kind, out);
+  }
+  return out;
+}
+
+std::vector<FurnitureMesh> furniture_meshes(const Scene& scene) {
+  std::vector<FurnitureMesh> out;
+  for (const auto& f : scene.furniture) add_visuals(f.model, f.link_poses, "", out);
+  return out;
+}
+
+std::vector<FurnitureMesh> marker_scene_furniture_meshes(const MarkerScene& scene, const std::string& scene_file,
+                                                         const std::string& data_dir) {
+  if (!scene.cell.empty()) {
+    MeshCache cache;
+    std::string cell_file;
+    return furniture_meshes(cell_scene_with_visuals(scene, scene_file, data_dir, cache, cell_file));
+  }
+  if (scene.task.empty()) return {};
+  return furniture_meshes(load_benchmark_task(data_dir, scene.task));
+}
+
 std::vector<RenderMesh> marker_scene_part_meshes(const MarkerScene& scene, const std::string& scene_file,
                                                  const std::string& data_dir) {
   MeshCache cache;
   std::vector<RenderMesh> meshes;
   if (!scene.cell.empty()) {
-    const auto cell_file = std::filesystem::path(scene_file).parent_path() / scene.cell;
-    CellSceneOptions options;
-    options.data_dir = data_dir;
-    options.load_visual_meshes = true;
-    options.mesh_cache = &cache;
-    const Scene cell_scene = build_cell_scene(load_cell(cell_file.string()), options);
+    std::string cell_file;
+    const Scene cell_scene = cell_scene_with_visuals(scene, scene_file, data_dir, cache, cell_file);
     for (const auto& o : scene.objects) {
       const auto it = std::find_if(cell_scene.objects.begin(), cell_scene.objects.end(), [&](auto& s) { return s.id == o.id; });
       if (it == cell_scene.objects.end())
-        throw InputError(scene_file, "objects", "object '" + o.id + "' is not a part of the cell " + cell_file.string());
+        throw InputError(scene_file, "objects", "object '" + o.id + "' is not a part of the cell " + cell_file);
       meshes.push_back(part_render_mesh(it->model, o.id));
     }
     return meshes;

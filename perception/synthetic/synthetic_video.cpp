@@ -61,27 +61,17 @@ struct Assets {
 Assets load_assets(const BenchmarkTask& task) {
   Assets a;
   MeshCache cache;
-  for (const auto& f : task.furniture) {
-    const RobotModel model = load_urdf(f.urdf);
-    PoseVector links;
-    forward_kinematics(model, Eigen::VectorXd::Zero(model.nq), Pose::Identity(), links);
-    double best_area = 0;
-    for (size_t l = 0; l < model.links.size(); ++l)
-      for (const auto& g : model.links[l].visuals) {
-        if (g.color[3] < 0.5) continue;  // the tunnel's see-through closing walls
-        RenderMesh m = geometry_render_mesh(g);
-        if (m.triangles.empty()) continue;
-        const Pose pose = links[l] * g.origin;
-        Eigen::AlignedBox3d box;
-        for (const auto& v : m.vertices) box.extend(pose * v.cast<double>());
-        a.obstacles.push_back(box);
-        if (const auto* b = std::get_if<BoxShape>(&g.shape); b && f.kind == "table" && b->size.x() * b->size.y() > best_area) {
-          best_area = b->size.x() * b->size.y();
-          a.table_top = links[l];
-          a.table_size = b->size.head<2>();
-        }
-        a.furniture.push_back({std::move(m), pose});
-      }
+  double best_area = 0;
+  for (auto& f : furniture_meshes(task)) {
+    Eigen::AlignedBox3d box;
+    for (const auto& v : f.mesh.vertices) box.extend(f.world_T_mesh * v.cast<double>());
+    a.obstacles.push_back(box);
+    if (f.box && f.kind == "table" && f.box->x() * f.box->y() > best_area) {
+      best_area = f.box->x() * f.box->y();
+      a.table_top = f.world_T_link;
+      a.table_size = f.box->head<2>();
+    }
+    a.furniture.push_back({std::move(f.mesh), f.world_T_mesh});
   }
   UrdfOptions options;
   options.load_visual_meshes = true;
@@ -98,23 +88,17 @@ Assets load_assets(const BenchmarkTask& task) {
 // extrinsics board may go.
 Assets scene_assets(const Scene& scene) {
   Assets a;
-  for (const auto& f : scene.furniture)
-    for (size_t l = 0; l < f.model.links.size(); ++l)
-      for (const auto& g : f.model.links[l].visuals) {
-        RenderMesh m = geometry_render_mesh(g);
-        if (m.triangles.empty()) continue;
-        const Pose pose = f.link_poses[l] * g.origin;
-        Eigen::AlignedBox3d box;
-        for (const auto& v : m.vertices) box.extend(pose * v.cast<double>());
-        a.obstacles.push_back(box);
-        const auto* b = std::get_if<BoxShape>(&g.shape);
-        if (b && pose.linear().col(2).z() > 0.99) {
-          Pose top = pose;
-          top.translation() += pose.linear().col(2) * (b->size.z() / 2);
-          a.board_tops.push_back({top, b->size.head<2>()});
-        }
-        a.furniture.push_back({std::move(m), pose});
-      }
+  for (auto& f : furniture_meshes(scene)) {
+    Eigen::AlignedBox3d box;
+    for (const auto& v : f.mesh.vertices) box.extend(f.world_T_mesh * v.cast<double>());
+    a.obstacles.push_back(box);
+    if (f.box && f.world_T_mesh.linear().col(2).z() > 0.99) {
+      Pose top = f.world_T_mesh;
+      top.translation() += top.linear().col(2) * (f.box->z() / 2);
+      a.board_tops.push_back({top, f.box->head<2>()});
+    }
+    a.furniture.push_back({std::move(f.mesh), f.world_T_mesh});
+  }
   for (const auto& o : scene.objects) a.parts.push_back(part_render_mesh(o.model, o.id));
   std::stable_sort(a.board_tops.begin(), a.board_tops.end(),
                    [](auto& x, auto& y) { return x.second.prod() > y.second.prod(); });

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <future>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -22,14 +23,16 @@ struct ModelPoseTracker::State {
   std::vector<Pose> camera_T_part;
   std::vector<ColorHistograms> colors;
   std::vector<double> reference_contrast;  // running mean of each part's accepted contrast
+  std::vector<std::optional<Pose>> previous;  // the pose a frame before, while seen in both
   std::vector<RenderMesh> silhouettes;  // untextured meshes for the occlusion map
+  cv::Mat furniture_depth;              // the furniture at the occlusion map's scale; empty: none
   PoseTracks tracks;
   bool started = false;  // the init frame has been seen
 };
 
 ModelPoseTracker::ModelPoseTracker(std::vector<ModelPart> parts, TrackerInit init, std::string init_source,
-                                   const ModelTrackerOptions& options)
-    : models_(std::move(parts)), init_(std::move(init)), options_(options) {
+                                   std::vector<FurnitureMesh> furniture, const ModelTrackerOptions& options)
+    : models_(std::move(parts)), furniture_(std::move(furniture)), init_(std::move(init)), options_(options) {
   for (const auto& m : models_) {
     if (!init_.find(m.id)) throw InputError(init_source, "parts", "no starting pose for part '" + m.id + "'");
     if (m.mesh.triangles.empty()) throw InputError(m.id, "mesh", "the part has no mesh to track");
@@ -63,11 +66,18 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.camera_T_part.assign(models_.size(), Pose::Identity());
   s.colors.assign(models_.size(), ColorHistograms());
   s.reference_contrast.assign(models_.size(), 0.0);
+  s.previous.assign(models_.size(), std::nullopt);
   for (const auto& m : models_) {
     RenderMesh flat;
     flat.vertices = m.mesh.vertices;
     flat.triangles = m.mesh.triangles;
     s.silhouettes.push_back(std::move(flat));
+  }
+  if (!furniture_.empty()) {
+    Rasterizer r = occlusion_rasterizer();
+    for (const auto& f : furniture_)
+      r.draw({f.mesh.vertices, {}, f.mesh.triangles}, s.world_T_camera.inverse() * f.world_T_mesh);
+    s.furniture_depth = r.depth().clone();
   }
   s.tracks.fps = start.fps;
   for (const auto& p : parts_) {
@@ -76,6 +86,16 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   }
   s.tracks.samples.assign(parts_.size(), {});
   s.tracks.resize(std::max(start.frames, 0));
+}
+
+Rasterizer ModelPoseTracker::occlusion_rasterizer() const {
+  const State& s = *state_;
+  const double k = OcclusionMap().scale;
+  const cv::Size size(static_cast<int>(s.image_size.width * k) + 1, static_cast<int>(s.image_size.height * k) + 1);
+  Rasterizer r(size, s.intrinsics.fx * k, s.intrinsics.fy * k, (s.intrinsics.cx + 0.5) * k - 0.5,
+               (s.intrinsics.cy + 0.5) * k - 0.5, Pose::Identity());
+  r.clear({0, 0, 0}, {0, 0, 0});
+  return r;
 }
 
 OcclusionMap ModelPoseTracker::occlusion_map() const {
@@ -97,18 +117,23 @@ OcclusionMap ModelPoseTracker::occlusion_map() const {
     for (size_t b = a + 1; b < discs.size() && !overlap; ++b)
       overlap = (discs[a].centre - discs[b].centre).norm() < discs[a].radius + discs[b].radius;
   OcclusionMap map;
-  if (!overlap) return map;
-  const double k = map.scale;
-  const cv::Size size(static_cast<int>(s.image_size.width * k) + 1, static_cast<int>(s.image_size.height * k) + 1);
-  Rasterizer r(size, s.intrinsics.fx * k, s.intrinsics.fy * k, (s.intrinsics.cx + 0.5) * k - 0.5,
-               (s.intrinsics.cy + 0.5) * k - 0.5, Pose::Identity());
-  r.clear({0, 0, 0}, {0, 0, 0});
-  map.labels = cv::Mat::zeros(size, CV_8U);
-  cv::Mat before;
-  for (size_t p = 0; p < models_.size(); ++p) {
-    r.depth().copyTo(before);
-    r.draw(s.silhouettes[p], s.camera_T_part[p]);
-    map.labels.setTo(static_cast<int>(p + 1), r.depth() < before);
+  const bool furniture = !s.furniture_depth.empty();
+  if (!overlap && !furniture) return map;
+  Rasterizer r = occlusion_rasterizer();
+  if (furniture) {
+    r.restore(cv::Mat::zeros(s.furniture_depth.size(), CV_8UC3), s.furniture_depth);
+    map.labels = cv::Mat(s.furniture_depth.size(), CV_8U, cv::Scalar(0));
+    map.labels.setTo(OcclusionMap::kFurniture, s.furniture_depth < 1e9f);
+  } else {
+    map.labels = cv::Mat::zeros(r.depth().size(), CV_8U);
+  }
+  if (overlap) {
+    cv::Mat before;
+    for (size_t p = 0; p < models_.size(); ++p) {
+      r.depth().copyTo(before);
+      r.draw(s.silhouettes[p], s.camera_T_part[p]);
+      map.labels.setTo(static_cast<int>(p + 1), r.depth() < before);
+    }
   }
   map.depth = r.depth().clone();
   return map;
@@ -139,23 +164,43 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
   std::vector<PoseObservation> seen;
   std::vector<bool> found(models_.size(), false), learn(models_.size(), false);
   for (size_t k = 0; k < models_.size(); ++k) {
-    const RegionFrameResult r = track_region(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
-                                             static_cast<int>(k), options_.region);
-    const double used = r.lines ? static_cast<double>(r.used_lines) / r.lines : 0.0;
-    // Not seen well enough (an occluder over it, out of the picture): keep the last pose. The
-    // bar is relative to how the part has stood out so far, as parts differ from their
-    // surroundings more or less.
+    const int part = static_cast<int>(k);
+    // A part seen in the last two frames goes on across the view as it moved between them (a
+    // carry); not in depth, which a silhouette gives too weakly to extrapolate.
+    Pose start = s.camera_T_part[k];
+    if (s.previous[k]) {
+      const Eigen::Vector3d now = s.camera_T_part[k].translation(), step = now - s.previous[k]->translation();
+      const Eigen::Vector3d ray = now.normalized();
+      start.translation() += options_.prediction * (step - step.dot(ray) * ray);
+    }
+    RegionFrameResult r = track_region(image, s.intrinsics, *contours_[k], s.colors[k], start, map, part, options_.region);
+    // Not seen well enough (an occluder over it, out of the picture, faster than the lines
+    // reach): look around its last pose. The bar is relative to how the part has stood out so
+    // far, as parts differ from their surroundings more or less.
     const double bar = std::max(options_.lost_contrast, options_.relative_contrast * s.reference_contrast[k]);
-    if (r.contrast < bar || used < options_.lost_used_fraction) continue;
+    auto is_seen = [&](const RegionFrameResult& x) {
+      return x.contrast >= bar && x.lines > 0 && x.used_lines >= options_.lost_used_fraction * x.lines;
+    };
+    if (!is_seen(r)) {
+      // Found elsewhere: only on clearer evidence than a frame tracked on.
+      const RegionFrameResult found_again = search(image, part, map);
+      if (found_again.contrast >= options_.search_contrast * s.reference_contrast[k] && is_seen(found_again)) r = found_again;
+    }
+    if (!is_seen(r)) {
+      s.previous[k].reset();
+      continue;  // keeps its last pose
+    }
+    s.previous[k] = s.camera_T_part[k];
+    s.camera_T_part[k] = r.camera_T_part;
     learn[k] = r.contrast >= options_.learn_contrast * s.reference_contrast[k];
     s.reference_contrast[k] += options_.reference_rate * (r.contrast - s.reference_contrast[k]);
-    s.camera_T_part[k] = r.camera_T_part;
     found[k] = true;
     PoseSample& sample = s.tracks.samples[k][frame];
     sample.valid = true;
     sample.pose = s.world_T_camera * r.camera_T_part;
+    const double used = static_cast<double>(r.used_lines) / r.lines;
     sample.confidence = std::clamp(r.contrast / 0.5, 0.0, 1.0) * std::min(1.0, used / 0.5);
-    seen.push_back({static_cast<int>(k), sample});
+    seen.push_back({part, sample});
   }
   const OcclusionMap after = occlusion_map();
   for (size_t k = 0; k < models_.size(); ++k)
@@ -163,6 +208,34 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], after, static_cast<int>(k), s.colors[k],
                    options_.region);
   return seen;
+}
+
+RegionFrameResult ModelPoseTracker::search(const cv::Mat& image, int k, const OcclusionMap& map) const {
+  const State& s = *state_;
+  const ContourModel& model = *contours_[k];
+  const Pose& last = s.camera_T_part[k];
+  const Eigen::Vector3d c = last * model.centre();
+  RegionFrameResult best;
+  if (c.z() < 0.05) return best;
+  // Candidate poses: the last one shifted across the view on a grid of image offsets, scored by
+  // their contrast; the best few are tracked from.
+  const double radius_px = model.radius() * s.intrinsics.fx / c.z();
+  const double reach = std::max(options_.search_radii * radius_px, 60.0), step = std::max(radius_px / 3, 6.0);
+  std::vector<std::pair<double, Pose>> candidates;
+  for (double dy = -reach; dy <= reach; dy += step)
+    for (double dx = -reach; dx <= reach; dx += step) {
+      Pose T = last;
+      T.translation() += Eigen::Vector3d(dx * c.z() / s.intrinsics.fx, dy * c.z() / s.intrinsics.fy, 0.0);
+      candidates.push_back({contour_contrast(image, s.intrinsics, model, s.colors[k], T), T});
+    }
+  const size_t tries = std::min<size_t>(options_.search_tries, candidates.size());
+  std::partial_sort(candidates.begin(), candidates.begin() + tries, candidates.end(),
+                    [](auto& a, auto& b) { return a.first > b.first; });
+  for (size_t i = 0; i < tries; ++i) {
+    const RegionFrameResult r = track_region(image, s.intrinsics, model, s.colors[k], candidates[i].second, map, k, options_.region);
+    if (i == 0 || r.contrast > best.contrast) best = r;
+  }
+  return best;
 }
 
 PoseTracks ModelPoseTracker::finish() {

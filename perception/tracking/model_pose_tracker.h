@@ -2,9 +2,12 @@
 // The pose tracker that needs no markers: each part's mesh and its pose in one frame (an
 // operator's placement or a pose estimator's) are enough. Every part is followed from frame to
 // frame by region-based tracking (region_pose.h) against colour models it learns as it goes;
-// parts hide each other's contour lines where the current estimates put them in front, and a
+// parts hide each other's contour lines where the current estimates put them in front (and the
+// furniture hides them where it stands in front), and a
 // part whose silhouette no longer stands out (a hand over it, out of the picture) keeps its last
-// pose, reported invalid, and is looked for there again in the next frame.
+// pose, reported invalid, and is looked for around it in the next frames (a grid of shifts
+// across the view scored by contrast, the best tracked from). A part seen in the last two
+// frames is predicted to go on as it moved (a carry).
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +15,8 @@
 #include <opencv2/core.hpp>
 
 #include "perception/markers/marker_scene.h"
+#include "perception/render/part_meshes.h"
+#include "perception/render/rasterizer.h"
 #include "perception/render/render_mesh.h"
 #include "perception/tracking/color_histograms.h"
 #include "perception/tracking/contour_model.h"
@@ -37,13 +42,20 @@ struct ModelTrackerOptions {
   double lost_used_fraction = 0.15;  // of the contour's lines
   double learn_contrast = 0.85;      // of the running mean: the colour models learn from the frame
   double reference_rate = 0.1;       // of the running mean
+  // A part not seen is looked for across the view up to this many of its radii from its last
+  // pose (candidates scored by contrast; the best `search_tries` tracked from).
+  double search_radii = 4.0;
+  int search_tries = 3;
+  double search_contrast = 0.9;   // of the running mean: a part found by the search
+  double prediction = 0.8;        // of the last frame's motion across the view, carried on
 };
 
 class ModelPoseTracker final : public PoseTracker {
 public:
-  // Throws InputError when `init` lacks a part's pose (naming the part).
+  // `furniture`: what may hide the parts (its contour lines there are left out). Throws
+  // InputError when `init` lacks a part's pose (naming the part).
   ModelPoseTracker(std::vector<ModelPart> parts, TrackerInit init, std::string init_source,
-                   const ModelTrackerOptions& options = {});
+                   std::vector<FurnitureMesh> furniture = {}, const ModelTrackerOptions& options = {});
   ~ModelPoseTracker() override;
 
   std::string name() const override { return "model"; }
@@ -55,8 +67,12 @@ public:
 private:
   struct State;
   OcclusionMap occlusion_map() const;
+  Rasterizer occlusion_rasterizer() const;  // at the occlusion map's scale, cleared
+  // Part k looked for around its last pose: the best of the tracked candidates.
+  RegionFrameResult search(const cv::Mat& image, int k, const OcclusionMap& map) const;
 
   std::vector<ModelPart> models_;
+  std::vector<FurnitureMesh> furniture_;
   TrackerInit init_;
   ModelTrackerOptions options_;
   std::vector<TrackedPart> parts_;

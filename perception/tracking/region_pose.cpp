@@ -79,7 +79,8 @@ Pass correspondence_pass(const cv::Mat& image, const PinholeIntrinsics& K, const
       const Eigen::Vector2d q = p.pixel + x * p.normal;
       cv::Vec3b c;
       if (!pixel_at(image, q, c)) ok = false;
-      else if (!occlusion.empty() && occlusion.hides(q.x(), q.y(), part, static_cast<float>(p.camera.z()))) ok = false;
+      // Hidden where the line crosses the part: whatever is in front outside it is background.
+      else if (i < 0 && !occlusion.empty() && occlusion.hides(q.x(), q.y(), part, static_cast<float>(p.camera.z()))) ok = false;
       else pf[i + N] = colors.foreground_probability(c);
     }
     if (!ok) continue;
@@ -185,6 +186,28 @@ RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& K,
   return result;
 }
 
+double contour_contrast(const cv::Mat& image, const PinholeIntrinsics& K, const ContourModel& model,
+                        const ColorHistograms& colors, const Pose& T, int samples, int step) {
+  const ContourView& view = model.nearest_view(T.inverse().translation() - model.centre());
+  double sum = 0.0;
+  int lines = 0;
+  for (size_t j = 0; j < view.points.size(); j += 2) {  // every other point: enough for a score
+    Projected p;
+    if (!project(view.points[j], T, K, p)) continue;
+    double in = 0.0, out = 0.0;
+    bool ok = true;
+    for (int i = 0; i < samples && ok; ++i) {
+      cv::Vec3b a, b;
+      ok = pixel_at(image, p.pixel - (0.5 + i * step) * p.normal, a) && pixel_at(image, p.pixel + (0.5 + i * step) * p.normal, b);
+      if (ok) in += colors.foreground_probability(a), out += colors.foreground_probability(b);
+    }
+    if (!ok) continue;
+    sum += (in - out) / samples;
+    ++lines;
+  }
+  return lines ? sum / lines : 0.0;
+}
+
 void learn_colors(const cv::Mat& image, const PinholeIntrinsics& K, const ContourModel& model, const Pose& T,
                   const OcclusionMap& occlusion, int part, ColorHistograms& colors, const RegionTrackingOptions& o) {
   const ContourView& view = model.nearest_view(T.inverse().translation() - model.centre());
@@ -201,8 +224,7 @@ void learn_colors(const cv::Mat& image, const PinholeIntrinsics& K, const Contou
       const auto z = static_cast<float>(p.camera.z());
       if (i < inner_px && pixel_at(image, qi, c) && (occlusion.empty() || !occlusion.hides(qi.x(), qi.y(), part, z)))
         colors.add_foreground(c);
-      if (i < outer_px && pixel_at(image, qo, c) && (occlusion.empty() || !occlusion.hides(qo.x(), qo.y(), part, z)))
-        colors.add_background(c);
+      if (i < outer_px && pixel_at(image, qo, c)) colors.add_background(c);
     }
   }
   colors.update();

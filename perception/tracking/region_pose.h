@@ -18,10 +18,11 @@ struct PinholeIntrinsics {
   double fx = 1000, fy = 1000, cx = 640, cy = 360;
 };
 
-// Which tracked part covers each pixel and how far away (rendered at the current estimates):
-// lines of one part crossing a nearer part are left out.
+// Which tracked part or furniture covers each pixel and how far away (rendered at the current
+// estimates): lines of one part where something nearer covers the part are left out.
 struct OcclusionMap {
-  cv::Mat labels;  // CV_8U, 0: no part, k + 1: part k
+  static constexpr int kFurniture = 255;
+  cv::Mat labels;  // CV_8U, 0: nothing, k + 1: part k, kFurniture: the furniture
   cv::Mat depth;   // CV_32F, m
   double scale = 0.25;  // map pixels per image pixel
 
@@ -54,6 +55,12 @@ struct RegionFrameResult {
 RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& camera, const ContourModel& model,
                                const ColorHistograms& colors, const Pose& camera_T_part, const OcclusionMap& occlusion,
                                int part, const RegionTrackingOptions& options = {});
+
+// How well the part stands out at `camera_T_part`: the mean over its contour points of P(part)
+// on `samples` pixels inside minus `samples` outside, `step` px apart (-1..1; 0 when no point
+// is in the image). Cheap: for scoring candidate poses in a search.
+double contour_contrast(const cv::Mat& image, const PinholeIntrinsics& camera, const ContourModel& model,
+                        const ColorHistograms& colors, const Pose& camera_T_part, int samples = 4, int step = 2);
 
 // Adds the pixels along the contour at `camera_T_part` to the colour models and updates them.
 void learn_colors(const cv::Mat& image, const PinholeIntrinsics& camera, const ContourModel& model,
