@@ -24,6 +24,7 @@ struct ModelPoseTracker::State {
   std::vector<ColorHistograms> colors;
   std::vector<double> reference_contrast;  // running mean of each part's accepted contrast
   std::vector<std::optional<Pose>> previous;  // the pose a frame before, while seen in both
+  std::vector<std::vector<Eigen::Vector2d>> centres;  // image of the centre, last frames seen in a row
   std::vector<RenderMesh> silhouettes;  // untextured meshes for the occlusion map
   cv::Mat furniture_depth;              // the furniture at the occlusion map's scale; empty: none
   PoseTracks tracks;
@@ -67,6 +68,7 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.colors.assign(models_.size(), ColorHistograms());
   s.reference_contrast.assign(models_.size(), 0.0);
   s.previous.assign(models_.size(), std::nullopt);
+  s.centres.assign(models_.size(), {});
   for (const auto& m : models_) {
     RenderMesh flat;
     flat.vertices = m.mesh.vertices;
@@ -173,7 +175,12 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       const Eigen::Vector3d ray = now.normalized();
       start.translation() += options_.prediction * (step - step.dot(ray) * ray);
     }
-    RegionFrameResult r = track_region(image, s.intrinsics, *contours_[k], s.colors[k], start, map, part, options_.region);
+    // At rest (its image barely moved in the last frames) a part keeps its depth.
+    bool resting = s.centres[k].size() >= 3;
+    for (size_t i = 1; resting && i < s.centres[k].size(); ++i)
+      resting = (s.centres[k][i] - s.centres[k].front()).norm() < options_.rest_px;
+    RegionFrameResult r =
+        track_region(image, s.intrinsics, *contours_[k], s.colors[k], start, map, part, options_.region, resting);
     // Not seen well enough (an occluder over it, out of the picture, faster than the lines
     // reach): look around its last pose. The bar is relative to how the part has stood out so
     // far, as parts differ from their surroundings more or less.
@@ -188,8 +195,12 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     }
     if (!is_seen(r)) {
       s.previous[k].reset();
+      s.centres[k].clear();
       continue;  // keeps its last pose
     }
+    const Eigen::Vector3d c = r.camera_T_part * contours_[k]->centre();
+    s.centres[k].push_back({s.intrinsics.fx * c.x() / c.z(), s.intrinsics.fy * c.y() / c.z()});
+    if (s.centres[k].size() > 3) s.centres[k].erase(s.centres[k].begin());
     s.previous[k] = s.camera_T_part[k];
     s.camera_T_part[k] = r.camera_T_part;
     learn[k] = r.contrast >= options_.learn_contrast * s.reference_contrast[k];

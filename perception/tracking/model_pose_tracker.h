@@ -48,6 +48,7 @@ struct ModelTrackerOptions {
   int search_tries = 3;
   double search_contrast = 0.9;   // of the running mean: a part found by the search
   double prediction = 0.8;        // of the last frame's motion across the view, carried on
+  double rest_px = 1.0;           // a part whose centre's image moved less over 3 frames holds its depth
 };
 
 class ModelPoseTracker final : public PoseTracker {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/Cholesky>
 
@@ -122,8 +123,9 @@ Pass correspondence_pass(const cv::Mat& image, const PinholeIntrinsics& K, const
 }
 
 // Gauss-Newton steps moving the contour points' projections to the lines' edge estimates.
+// `held_ray`: when set, the centre's moves along this camera-frame direction are taken out.
 Pose newton_steps(const Pass& pass, const PinholeIntrinsics& K, const Eigen::Vector3d& centre, Pose T,
-                  const RegionTrackingOptions& o) {
+                  const RegionTrackingOptions& o, const std::optional<Eigen::Vector3d>& held_ray) {
   for (int step = 0; step < o.newton_steps; ++step) {
     Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
     Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
@@ -147,8 +149,13 @@ Pose newton_steps(const Pass& pass, const PinholeIntrinsics& K, const Eigen::Vec
       b.noalias() += w * r * J.transpose();
     }
     for (int i = 0; i < 3; ++i) A(i, i) += o.tikhonov_rotation, A(i + 3, i + 3) += o.tikhonov_translation;
-    const Eigen::Matrix<double, 6, 1> delta = -A.ldlt().solve(b);
+    Eigen::Matrix<double, 6, 1> delta = -A.ldlt().solve(b);
     if (!delta.allFinite()) break;
+    if (held_ray) {
+      // The step moves the centre by R * v (rotations turn about it): keep that off the ray.
+      const Eigen::Vector3d along = R.transpose() * *held_ray;
+      delta.tail<3>() -= along * along.dot(delta.tail<3>());
+    }
     const Eigen::Vector3d w = delta.head<3>();
     Pose M = Pose::Identity();
     if (w.norm() > 1e-12) M.linear() = Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix();
@@ -169,9 +176,11 @@ bool OcclusionMap::hides(double x, double y, int part, float z) const {
 
 RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& K, const ContourModel& model,
                                const ColorHistograms& colors, const Pose& camera_T_part, const OcclusionMap& occlusion,
-                               int part, const RegionTrackingOptions& o) {
+                               int part, const RegionTrackingOptions& o, bool hold_depth) {
   RegionFrameResult result;
   Pose T = camera_T_part;
+  std::optional<Eigen::Vector3d> held_ray;
+  if (hold_depth) held_ray = (T * model.centre()).normalized();
   for (const int scale : o.scales) {
     const Eigen::Vector3d towards_camera = T.inverse().translation() - model.centre();
     const ContourView& view = model.nearest_view(towards_camera);
@@ -180,7 +189,7 @@ RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& K,
     result.used_lines = static_cast<int>(pass.lines.size());
     result.contrast = pass.contrast_lines ? pass.contrast_sum / pass.contrast_lines : 0.0;
     if (pass.lines.size() < 6) continue;  // too little to fix six degrees of freedom
-    T = newton_steps(pass, K, model.centre(), T, o);
+    T = newton_steps(pass, K, model.centre(), T, o, held_ray);
   }
   result.camera_T_part = T;
   return result;

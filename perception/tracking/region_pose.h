@@ -52,9 +52,11 @@ struct RegionFrameResult {
 };
 
 // Refines `camera_T_part` on `image` (BGR, undistorted). `part` is the part's label in `occlusion`.
+// `hold_depth`: the part's centre keeps its distance along its line of sight (a part at rest:
+// the silhouette's size is the weakest cue, and small edge biases would let it drift).
 RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& camera, const ContourModel& model,
                                const ColorHistograms& colors, const Pose& camera_T_part, const OcclusionMap& occlusion,
-                               int part, const RegionTrackingOptions& options = {});
+                               int part, const RegionTrackingOptions& options = {}, bool hold_depth = false);
 
 // How well the part stands out at `camera_T_part`: the mean over its contour points of P(part)
 // on `samples` pixels inside minus `samples` outside, `step` px apart (-1..1; 0 when no point
