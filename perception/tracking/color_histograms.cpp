@@ -5,8 +5,12 @@
 namespace demoplan::perception {
 
 void ColorHistograms::update(float foreground_rate, float background_rate) {
-  if (fg_count_ < 1.f || bg_count_ < 1.f) return;  // nothing seen on one side: keep the model
-  const float rf = initialised_ ? foreground_rate : 1.f, rb = initialised_ ? background_rate : 1.f;
+  if (!initialised_ && (fg_count_ < 1.f || bg_count_ < 1.f)) return;  // the first needs both sides
+  // A side without pixels this time keeps its model.
+  const float rf = !initialised_ ? 1.f : fg_count_ < 1.f ? 0.f : foreground_rate;
+  const float rb = !initialised_ ? 1.f : bg_count_ < 1.f ? 0.f : background_rate;
+  fg_count_ = std::max(fg_count_, 1.f);
+  bg_count_ = std::max(bg_count_, 1.f);
   for (int i = 0; i < kBins; ++i) {
     fg_[i] = (1.f - rf) * fg_[i] + rf * fg_new_[i] / fg_count_;
     bg_[i] = (1.f - rb) * bg_[i] + rb * bg_new_[i] / bg_count_;

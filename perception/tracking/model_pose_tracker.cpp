@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "perception/render/part_meshes.h"
 #include "perception/render/rasterizer.h"
+#include "perception/tracking/surface_flow.h"
 
 namespace demoplan::perception {
 
@@ -27,6 +28,7 @@ struct ModelPoseTracker::State {
   std::vector<std::vector<Eigen::Vector2d>> centres;  // image of the centre, last frames seen in a row
   std::vector<RenderMesh> silhouettes;  // untextured meshes for the occlusion map
   cv::Mat furniture_depth;              // the furniture at the occlusion map's scale; empty: none
+  cv::Mat last_gray;                    // the last frame, for the surface points' flow
   PoseTracks tracks;
   bool started = false;  // the init frame has been seen
 };
@@ -102,25 +104,8 @@ Rasterizer ModelPoseTracker::occlusion_rasterizer() const {
 
 OcclusionMap ModelPoseTracker::occlusion_map() const {
   const State& s = *state_;
-  // Only needed where two parts' projections may overlap: their bounding circles.
-  struct Disc {
-    Eigen::Vector2d centre;
-    double radius;
-  };
-  std::vector<Disc> discs;
-  for (size_t k = 0; k < models_.size(); ++k) {
-    const Eigen::Vector3d c = s.camera_T_part[k] * contours_[k]->centre();
-    if (c.z() < 0.05) continue;
-    const double r = contours_[k]->radius() * s.intrinsics.fx / c.z() * 1.2;
-    discs.push_back({{s.intrinsics.fx * c.x() / c.z(), s.intrinsics.fy * c.y() / c.z()}, r});
-  }
-  bool overlap = false;
-  for (size_t a = 0; a < discs.size() && !overlap; ++a)
-    for (size_t b = a + 1; b < discs.size() && !overlap; ++b)
-      overlap = (discs[a].centre - discs[b].centre).norm() < discs[a].radius + discs[b].radius;
   OcclusionMap map;
   const bool furniture = !s.furniture_depth.empty();
-  if (!overlap && !furniture) return map;
   Rasterizer r = occlusion_rasterizer();
   if (furniture) {
     r.restore(cv::Mat::zeros(s.furniture_depth.size(), CV_8UC3), s.furniture_depth);
@@ -129,13 +114,11 @@ OcclusionMap ModelPoseTracker::occlusion_map() const {
   } else {
     map.labels = cv::Mat::zeros(r.depth().size(), CV_8U);
   }
-  if (overlap) {
-    cv::Mat before;
-    for (size_t p = 0; p < models_.size(); ++p) {
-      r.depth().copyTo(before);
-      r.draw(s.silhouettes[p], s.camera_T_part[p]);
-      map.labels.setTo(static_cast<int>(p + 1), r.depth() < before);
-    }
+  cv::Mat before;
+  for (size_t p = 0; p < models_.size(); ++p) {
+    r.depth().copyTo(before);
+    r.draw(s.silhouettes[p], s.camera_T_part[p]);
+    map.labels.setTo(static_cast<int>(p + 1), r.depth() < before);
   }
   map.depth = r.depth().clone();
   return map;
@@ -157,14 +140,25 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     for (size_t k = 0; k < models_.size(); ++k)
       learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], map, static_cast<int>(k), s.colors[k],
                    options_.region);
+    // Parts rest where a demonstration starts: each holds its depth from the first frame on.
+    for (size_t k = 0; k < models_.size(); ++k) {
+      const Eigen::Vector3d c = s.camera_T_part[k] * contours_[k]->centre();
+      s.centres[k].assign(3, Eigen::Vector2d(s.intrinsics.fx * c.x() / c.z(), s.intrinsics.fy * c.y() / c.z()));
+    }
     for (size_t k = 0; k < models_.size(); ++k)
       s.reference_contrast[k] = track_region(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
                                              static_cast<int>(k), options_.region).contrast;
     s.started = true;
   }
   const OcclusionMap map = occlusion_map();
+  cv::Mat gray;
+  cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
+  std::vector<bool> follow(models_.size());
+  for (size_t k = 0; k < models_.size(); ++k) follow[k] = !s.centres[k].empty();  // seen in the last frame
+  const auto points = follow_surface_points(s.last_gray, gray, map, s.camera_T_part, follow, s.intrinsics, options_.flow);
+  s.last_gray = gray;
   std::vector<PoseObservation> seen;
-  std::vector<bool> found(models_.size(), false), learn(models_.size(), false);
+  std::vector<bool> found(models_.size(), false), learn(models_.size(), false), learn_part(models_.size(), false);
   for (size_t k = 0; k < models_.size(); ++k) {
     const int part = static_cast<int>(k);
     // A part seen in the last two frames goes on across the view as it moved between them (a
@@ -180,7 +174,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     for (size_t i = 1; resting && i < s.centres[k].size(); ++i)
       resting = (s.centres[k][i] - s.centres[k].front()).norm() < options_.rest_px;
     RegionFrameResult r =
-        track_region(image, s.intrinsics, *contours_[k], s.colors[k], start, map, part, options_.region, resting);
+        track_region(image, s.intrinsics, *contours_[k], s.colors[k], start, map, part, options_.region, resting, points[k]);
     // Not seen well enough (an occluder over it, out of the picture, faster than the lines
     // reach): look around its last pose. The bar is relative to how the part has stood out so
     // far, as parts differ from their surroundings more or less.
@@ -204,6 +198,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     s.previous[k] = s.camera_T_part[k];
     s.camera_T_part[k] = r.camera_T_part;
     learn[k] = r.contrast >= options_.learn_contrast * s.reference_contrast[k];
+    learn_part[k] = resting;
     s.reference_contrast[k] += options_.reference_rate * (r.contrast - s.reference_contrast[k]);
     found[k] = true;
     PoseSample& sample = s.tracks.samples[k][frame];
@@ -217,7 +212,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
   for (size_t k = 0; k < models_.size(); ++k)
     if (learn[k])
       learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], after, static_cast<int>(k), s.colors[k],
-                   options_.region);
+                   options_.region, learn_part[k]);
   return seen;
 }
 

@@ -22,6 +22,7 @@
 #include "perception/tracking/contour_model.h"
 #include "perception/tracking/pose_tracker.h"
 #include "perception/tracking/region_pose.h"
+#include "perception/tracking/surface_flow.h"
 #include "perception/tracking/tracker_init.h"
 
 namespace demoplan::perception {
@@ -35,6 +36,7 @@ struct ModelPart {
 struct ModelTrackerOptions {
   ContourModelOptions contour;
   RegionTrackingOptions region;
+  SurfaceFlowOptions flow;
   // A part counts as seen in a frame when its contrast (region_pose.h) reaches both bars and
   // enough of its contour's lines find an edge; only then does its pose move.
   double lost_contrast = 0.08;

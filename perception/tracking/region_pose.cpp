@@ -124,8 +124,9 @@ Pass correspondence_pass(const cv::Mat& image, const PinholeIntrinsics& K, const
 
 // Gauss-Newton steps moving the contour points' projections to the lines' edge estimates.
 // `held_ray`: when set, the centre's moves along this camera-frame direction are taken out.
-Pose newton_steps(const Pass& pass, const PinholeIntrinsics& K, const Eigen::Vector3d& centre, Pose T,
-                  const RegionTrackingOptions& o, const std::optional<Eigen::Vector3d>& held_ray) {
+Pose newton_steps(const Pass& pass, const std::vector<SurfacePoint>& points, const PinholeIntrinsics& K,
+                  const Eigen::Vector3d& centre, Pose T, const RegionTrackingOptions& o,
+                  const std::optional<Eigen::Vector3d>& held_ray) {
   for (int step = 0; step < o.newton_steps; ++step) {
     Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
     Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
@@ -147,6 +148,23 @@ Pose newton_steps(const Pass& pass, const PinholeIntrinsics& K, const Eigen::Vec
       const double w = 1.0 / (l.variance * (1.0 + r * r / (o.robust_scale * o.robust_scale * l.variance)));
       A.noalias() += w * J.transpose() * J;
       b.noalias() += w * r * J.transpose();
+    }
+    const double point_variance = o.point_sigma * o.point_sigma;
+    for (const auto& p : points) {
+      const Eigen::Vector3d X = T * p.part;
+      if (X.z() < kNear) continue;
+      const double iz = 1.0 / X.z();
+      const Eigen::Vector2d r(K.fx * X.x() * iz + K.cx - p.pixel.x(), K.fy * X.y() * iz + K.cy - p.pixel.y());
+      Eigen::Matrix<double, 2, 3> Jp;
+      Jp << K.fx * iz, 0, -K.fx * X.x() * iz * iz, 0, K.fy * iz, -K.fy * X.y() * iz * iz;
+      Eigen::Matrix<double, 3, 6> Jx;
+      Jx.leftCols<3>() = -R * skew(p.part - centre);
+      Jx.rightCols<3>() = R;
+      const Eigen::Matrix<double, 2, 6> J = Jp * Jx;
+      // Cauchy weights: a point that slid off the part (onto a hand, an edge) pulls little.
+      const double w = 1.0 / (point_variance * (1.0 + r.squaredNorm() / (o.robust_scale * o.robust_scale * point_variance)));
+      A.noalias() += w * J.transpose() * J;
+      b.noalias() += w * J.transpose() * r;
     }
     for (int i = 0; i < 3; ++i) A(i, i) += o.tikhonov_rotation, A(i + 3, i + 3) += o.tikhonov_translation;
     Eigen::Matrix<double, 6, 1> delta = -A.ldlt().solve(b);
@@ -176,7 +194,8 @@ bool OcclusionMap::hides(double x, double y, int part, float z) const {
 
 RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& K, const ContourModel& model,
                                const ColorHistograms& colors, const Pose& camera_T_part, const OcclusionMap& occlusion,
-                               int part, const RegionTrackingOptions& o, bool hold_depth) {
+                               int part, const RegionTrackingOptions& o, bool hold_depth,
+                               const std::vector<SurfacePoint>& points) {
   RegionFrameResult result;
   Pose T = camera_T_part;
   std::optional<Eigen::Vector3d> held_ray;
@@ -188,8 +207,8 @@ RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& K,
     result.lines = static_cast<int>(view.points.size());
     result.used_lines = static_cast<int>(pass.lines.size());
     result.contrast = pass.contrast_lines ? pass.contrast_sum / pass.contrast_lines : 0.0;
-    if (pass.lines.size() < 6) continue;  // too little to fix six degrees of freedom
-    T = newton_steps(pass, K, model.centre(), T, o, held_ray);
+    if (pass.lines.size() + points.size() < 6) continue;  // too little to fix six degrees of freedom
+    T = newton_steps(pass, points, K, model.centre(), T, o, held_ray);
   }
   result.camera_T_part = T;
   return result;
@@ -218,7 +237,8 @@ double contour_contrast(const cv::Mat& image, const PinholeIntrinsics& K, const 
 }
 
 void learn_colors(const cv::Mat& image, const PinholeIntrinsics& K, const ContourModel& model, const Pose& T,
-                  const OcclusionMap& occlusion, int part, ColorHistograms& colors, const RegionTrackingOptions& o) {
+                  const OcclusionMap& occlusion, int part, ColorHistograms& colors, const RegionTrackingOptions& o,
+                  bool foreground) {
   const ContourView& view = model.nearest_view(T.inverse().translation() - model.centre());
   for (const auto& cp : view.points) {
     Projected p;
@@ -231,7 +251,7 @@ void learn_colors(const cv::Mat& image, const PinholeIntrinsics& K, const Contou
       cv::Vec3b c;
       const Eigen::Vector2d qi = p.pixel - (i - 0.5) * p.normal, qo = p.pixel + (i - 0.5) * p.normal;
       const auto z = static_cast<float>(p.camera.z());
-      if (i < inner_px && pixel_at(image, qi, c) && (occlusion.empty() || !occlusion.hides(qi.x(), qi.y(), part, z)))
+      if (foreground && i < inner_px && pixel_at(image, qi, c) && (occlusion.empty() || !occlusion.hides(qi.x(), qi.y(), part, z)))
         colors.add_foreground(c);
       if (i < outer_px && pixel_at(image, qo, c)) colors.add_background(c);
     }

@@ -24,11 +24,17 @@ struct OcclusionMap {
   static constexpr int kFurniture = 255;
   cv::Mat labels;  // CV_8U, 0: nothing, k + 1: part k, kFurniture: the furniture
   cv::Mat depth;   // CV_32F, m
-  double scale = 0.25;  // map pixels per image pixel
+  double scale = 0.5;  // map pixels per image pixel
 
   bool empty() const { return labels.empty(); }
   // True when a part other than `part` is in front of depth `z` at image pixel (x, y).
   bool hides(double x, double y, int part, float z) const;
+};
+
+// A point on the part (its frame) and where the image shows it (surface_flow.h).
+struct SurfacePoint {
+  Eigen::Vector3d part;
+  Eigen::Vector2d pixel;
 };
 
 struct RegionTrackingOptions {
@@ -42,6 +48,7 @@ struct RegionTrackingOptions {
   double tikhonov_rotation = 1e3;       // regularisation of each step (rad^-2, in the data's units)
   double tikhonov_translation = 3e4;    // (m^-2)
   int learn_pixels = 12;                // each side of the contour, for the colour models
+  double point_sigma = 1.5;             // px, of a surface point's image position (Cauchy-weighted)
 };
 
 struct RegionFrameResult {
@@ -54,9 +61,11 @@ struct RegionFrameResult {
 // Refines `camera_T_part` on `image` (BGR, undistorted). `part` is the part's label in `occlusion`.
 // `hold_depth`: the part's centre keeps its distance along its line of sight (a part at rest:
 // the silhouette's size is the weakest cue, and small edge biases would let it drift).
+// `points`: surface points seen in this frame, fitted together with the contour.
 RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& camera, const ContourModel& model,
                                const ColorHistograms& colors, const Pose& camera_T_part, const OcclusionMap& occlusion,
-                               int part, const RegionTrackingOptions& options = {}, bool hold_depth = false);
+                               int part, const RegionTrackingOptions& options = {}, bool hold_depth = false,
+                               const std::vector<SurfacePoint>& points = {});
 
 // How well the part stands out at `camera_T_part`: the mean over its contour points of P(part)
 // on `samples` pixels inside minus `samples` outside, `step` px apart (-1..1; 0 when no point
@@ -64,9 +73,11 @@ RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& ca
 double contour_contrast(const cv::Mat& image, const PinholeIntrinsics& camera, const ContourModel& model,
                         const ColorHistograms& colors, const Pose& camera_T_part, int samples = 4, int step = 2);
 
-// Adds the pixels along the contour at `camera_T_part` to the colour models and updates them.
+// Adds the pixels along the contour at `camera_T_part` to the colour models and updates them;
+// the part's own model only with `foreground` (not while a hand holds it: its colours next to
+// the part would creep into the part's).
 void learn_colors(const cv::Mat& image, const PinholeIntrinsics& camera, const ContourModel& model,
                   const Pose& camera_T_part, const OcclusionMap& occlusion, int part, ColorHistograms& colors,
-                  const RegionTrackingOptions& options = {});
+                  const RegionTrackingOptions& options = {}, bool foreground = true);
 
 }  // namespace demoplan::perception
