@@ -157,10 +157,21 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
   for (size_t k = 0; k < models_.size(); ++k) follow[k] = !s.centres[k].empty();  // seen in the last frame
   const auto points = follow_surface_points(s.last_gray, gray, map, s.camera_T_part, follow, s.intrinsics, options_.flow);
   s.last_gray = gray;
+  // At rest: the image of the part's centre barely moved in the last three frames seen.
+  std::vector<bool> resting(models_.size()), moving(models_.size());
+  for (size_t k = 0; k < models_.size(); ++k) {
+    resting[k] = s.centres[k].size() >= 3;
+    for (size_t i = 1; resting[k] && i < s.centres[k].size(); ++i)
+      resting[k] = (s.centres[k][i] - s.centres[k].front()).norm() < options_.rest_px;
+    moving[k] = !s.centres[k].empty() && !resting[k];
+  }
   std::vector<PoseObservation> seen;
   std::vector<bool> found(models_.size(), false), learn(models_.size(), false), learn_part(models_.size(), false);
   for (size_t k = 0; k < models_.size(); ++k) {
     const int part = static_cast<int>(k);
+    // A resting part that a moving one passes in front of stays where it is, unmeasured: what
+    // is left of its silhouette is too little to tell a move from the occluder's pull.
+    if (resting[k] && passed_in_front(k, moving)) continue;
     // A part seen in the last two frames goes on across the view as it moved between them (a
     // carry); not in depth, which a silhouette gives too weakly to extrapolate.
     Pose start = s.camera_T_part[k];
@@ -169,12 +180,9 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       const Eigen::Vector3d ray = now.normalized();
       start.translation() += options_.prediction * (step - step.dot(ray) * ray);
     }
-    // At rest (its image barely moved in the last frames) a part keeps its depth.
-    bool resting = s.centres[k].size() >= 3;
-    for (size_t i = 1; resting && i < s.centres[k].size(); ++i)
-      resting = (s.centres[k][i] - s.centres[k].front()).norm() < options_.rest_px;
-    RegionFrameResult r =
-        track_region(image, s.intrinsics, *contours_[k], s.colors[k], start, map, part, options_.region, resting, points[k]);
+    // At rest a part keeps its depth.
+    RegionFrameResult r = track_region(image, s.intrinsics, *contours_[k], s.colors[k], start, map, part,
+                                       options_.region, resting[k], points[k]);
     // Not seen well enough (an occluder over it, out of the picture, faster than the lines
     // reach): look around its last pose. The bar is relative to how the part has stood out so
     // far, as parts differ from their surroundings more or less.
@@ -198,7 +206,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     s.previous[k] = s.camera_T_part[k];
     s.camera_T_part[k] = r.camera_T_part;
     learn[k] = r.contrast >= options_.learn_contrast * s.reference_contrast[k];
-    learn_part[k] = resting;
+    learn_part[k] = resting[k];
     s.reference_contrast[k] += options_.reference_rate * (r.contrast - s.reference_contrast[k]);
     found[k] = true;
     PoseSample& sample = s.tracks.samples[k][frame];
@@ -214,6 +222,24 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], after, static_cast<int>(k), s.colors[k],
                    options_.region, learn_part[k]);
   return seen;
+}
+
+bool ModelPoseTracker::passed_in_front(size_t k, const std::vector<bool>& moving) const {
+  const State& s = *state_;
+  auto disc = [&](size_t i, Eigen::Vector2d& centre, double& radius, double& depth) {
+    const Eigen::Vector3d c = s.camera_T_part[i] * contours_[i]->centre();
+    if (c.z() < 0.05) return false;
+    centre = {s.intrinsics.fx * c.x() / c.z(), s.intrinsics.fy * c.y() / c.z()};
+    radius = contours_[i]->radius() * s.intrinsics.fx / c.z();
+    depth = c.z();
+    return true;
+  };
+  Eigen::Vector2d ck, cj;
+  double rk, rj, zk, zj;
+  if (!disc(k, ck, rk, zk)) return false;
+  for (size_t j = 0; j < models_.size(); ++j)
+    if (j != k && moving[j] && disc(j, cj, rj, zj) && zj < zk && (ck - cj).norm() < rk + rj) return true;
+  return false;
 }
 
 RegionFrameResult ModelPoseTracker::search(const cv::Mat& image, int k, const OcclusionMap& map) const {

@@ -41,7 +41,7 @@ struct ModelTrackerOptions {
   // enough of its contour's lines find an edge; only then does its pose move.
   double lost_contrast = 0.08;
   double relative_contrast = 0.7;    // of the part's running mean contrast
-  double lost_used_fraction = 0.15;  // of the contour's lines
+  double lost_used_fraction = 0.3;   // of the contour's lines
   double learn_contrast = 0.85;      // of the running mean: the colour models learn from the frame
   double reference_rate = 0.1;       // of the running mean
   // A part not seen is looked for across the view up to this many of its radii from its last
@@ -71,6 +71,8 @@ private:
   struct State;
   OcclusionMap occlusion_map() const;
   Rasterizer occlusion_rasterizer() const;  // at the occlusion map's scale, cleared
+  // Whether a moving part, nearer the camera, overlaps part k's image (bounding circles).
+  bool passed_in_front(size_t k, const std::vector<bool>& moving) const;
   // Part k looked for around its last pose: the best of the tracked candidates.
   RegionFrameResult search(const cv::Mat& image, int k, const OcclusionMap& map) const;
 

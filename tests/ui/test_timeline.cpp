@@ -1,5 +1,6 @@
 // Editing events through the timeline changes the demonstration; undo restores it; a broken rule
 // is shown with its reason and jumps to the event.
+#include <QComboBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QUndoStack>
@@ -118,6 +119,21 @@ private slots:
     QCOMPARE(doc_->undoStack()->count(), 1);
     doc_->undoStack()->undo();
     QCOMPARE(demonstration_to_json(doc_->demonstration()), original_);
+  }
+
+  void detectingWithThePartModelsStartsFromThePosesAtFrameZero() {
+    // The sample's marker scene has no init.json beside it: the parts start where the project
+    // shows them at frame 0; the markers on them are only texture to this tracker.
+    panel_->trackerChoice()->setCurrentIndex(1);
+    QVERIFY(doc_->detection()->modelTracker());
+    QTest::mouseClick(panel_->detectButton(), Qt::LeftButton);
+    QVERIFY(test::waitFor([&] { return !doc_->detection()->runner()->isRunning(); }, 60000));
+    QVERIFY2(panel_->detectionLabel()->text().startsWith(QStringLiteral("Found")), qPrintable(panel_->detectionLabel()->text()));
+    const Demonstration& d = doc_->demonstration();
+    QCOMPARE(int(d.events.size()), 4);
+    const int labelled[] = {9, 48, 60, 97};
+    for (int i = 0; i < 4; ++i) QVERIFY2(std::abs(d.events[i].frame - labelled[i]) <= 2, qPrintable(QString::number(d.events[i].frame)));
+    QCOMPARE(doc_->undoStack()->count(), 1);
   }
 
   void detectionCanBeCancelled() {

@@ -1,5 +1,8 @@
 #include "ui/document/event_detection.h"
 
+#include <filesystem>
+
+#include "perception/tracking/tracker_init.h"
 #include "ui/document/document.h"
 
 namespace demoplan::ui {
@@ -27,6 +30,24 @@ bool EventDetection::start() {
   job.markers = doc_->media()->markersFile();
   for (const auto& o : doc_->scene().objects) job.object_ids.push_back(o.id);
   job.task = doc_->sceneReference().is_cell() ? doc_->scene().name : doc_->sceneReference().task;
+  if (model_tracker_) {
+    job.model_tracker = true;
+    job.data_dir = doc_->dataDir();
+    const auto init_file = std::filesystem::path(job.markers).parent_path() / "init.json";
+    if (std::filesystem::is_regular_file(init_file)) {
+      job.init_source = init_file.string();
+      try {
+        job.init = perception::load_tracker_init(job.init_source);
+      } catch (const std::exception& e) {
+        emit done(ExtractionOutcome{false, e.what(), {}, {}, 0, 0.0});
+        return false;
+      }
+    } else {
+      job.init_source = "the parts' poses at frame 0";
+      const PoseList poses = doc_->demoPosesAt(0);
+      for (size_t k = 0; k < job.object_ids.size() && k < poses.size(); ++k) job.init.parts.push_back({job.object_ids[k], poses[k]});
+    }
+  }
   return runner_.start(std::move(job));
 }
 

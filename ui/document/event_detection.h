@@ -22,6 +22,12 @@ public:
   QString blocker() const;
   bool start();
 
+  // Markers on the parts (default), or the parts' models: then every part starts from init.json
+  // beside the marker scene when there is one, else from where the project shows it at frame 0
+  // (the operator places it there).
+  void setModelTracker(bool model) { model_tracker_ = model; }
+  bool modelTracker() const { return model_tracker_; }
+
 signals:
   // After the demonstration was replaced (ok) or nothing was (not ok: the error says why).
   void done(const ExtractionOutcome& outcome);
@@ -31,6 +37,7 @@ private:
 
   Document* doc_;
   ExtractionRunner runner_;
+  bool model_tracker_ = false;
 };
 
 }  // namespace demoplan::ui

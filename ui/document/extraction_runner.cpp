@@ -1,10 +1,14 @@
 #include "ui/document/extraction_runner.h"
 
+#include <memory>
+
 #include "core/error.h"
 #include "perception/camera/camera_model.h"
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/markers/marker_scene.h"
+#include "perception/render/part_meshes.h"
 #include "perception/tracking/marker_pose_tracker.h"
+#include "perception/tracking/model_pose_tracker.h"
 
 namespace demoplan::ui {
 
@@ -51,8 +55,14 @@ bool ExtractionRunner::start(ExtractionJob job) {
         last_percent = percent;
         post([this, done, total] { emit progress(done, total); });
       };
-      perception::MarkerPoseTracker tracker(scene);
-      const perception::ExtractionResult r = perception::extract_demonstration(job.video, camera, tracker, job.task, options);
+      std::unique_ptr<perception::PoseTracker> tracker;
+      if (job.model_tracker)
+        tracker = std::make_unique<perception::ModelPoseTracker>(
+            perception::model_parts(scene, job.markers, job.data_dir), job.init, job.init_source,
+            perception::marker_scene_furniture_meshes(scene, job.markers, job.data_dir));
+      else
+        tracker = std::make_unique<perception::MarkerPoseTracker>(scene);
+      const perception::ExtractionResult r = perception::extract_demonstration(job.video, camera, *tracker, job.task, options);
       if (!r.cancelled) {
         outcome->demonstration = reorder_objects(r.demonstration, job.object_ids, job.markers);
         outcome->warnings = r.warnings;

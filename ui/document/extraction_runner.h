@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/demo/demonstration.h"
+#include "perception/tracking/tracker_init.h"
 #include "ui/document/background_job.h"
 
 namespace demoplan::ui {
@@ -15,6 +16,12 @@ struct ExtractionJob {
   std::string video, camera, markers;  // files
   std::vector<std::string> object_ids;  // the scene's parts, in its order
   std::string task;
+  // The model-based tracker (no markers): the parts' meshes from the task or cell the marker
+  // scene names (in `data_dir`), started from `init` (`init_source` names it in messages).
+  bool model_tracker = false;
+  std::string data_dir;
+  perception::TrackerInit init;
+  std::string init_source;
 };
 
 struct ExtractionOutcome {

@@ -1,5 +1,6 @@
 #include "ui/widgets/timeline_widget.h"
 
+#include <QComboBox>
 #include <QContextMenuEvent>
 #include <QHelpEvent>
 #include <QLabel>
@@ -375,6 +376,14 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
   detect_ = new QPushButton(tr("Detect Events in the Video"), this);
   detect_->setToolTip(tr("Find the grasps and releases and the parts' poses in the video (markers on the parts, "
                          "hand near a part). Replaces the events; Undo brings them back."));
+  tracker_ = new QComboBox(this);
+  tracker_->addItem(tr("Markers on the parts"));
+  tracker_->addItem(tr("Part models (no markers)"));
+  tracker_->setToolTip(tr("How the parts are followed through the video: by the markers stuck on them, or by their "
+                          "3D models from where they stand in the first frame (init.json beside the marker scene, "
+                          "else the parts' poses at frame 0 in this project)"));
+  connect(tracker_, &QComboBox::currentIndexChanged, this,
+          [this](int index) { doc_->detection()->setModelTracker(index == 1); });
   cancel_ = new QPushButton(tr("Cancel"), this);
   progress_ = new QProgressBar(this);
   progress_->setMaximumWidth(220);
@@ -382,6 +391,7 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
   detection_ = new QLabel(this);
   detection_->setWordWrap(false);
   bar->addWidget(detect_);
+  bar->addWidget(tracker_);
   bar->addWidget(progress_);
   bar->addWidget(cancel_);
   bar->addWidget(detection_, 1);
@@ -478,6 +488,7 @@ void TimelinePanel::refreshDetection() {
   const bool running = doc_->detection()->runner()->isRunning();
   const QString blocker = doc_->detection()->blocker();
   detect_->setEnabled(!running && blocker.isEmpty());
+  tracker_->setEnabled(!running);
   detect_->setToolTip(blocker.isEmpty() || running ? tr("Find the grasps and releases and the parts' poses in the video "
                                                         "(markers on the parts, hand near a part). Replaces the events; "
                                                         "Undo brings them back.")

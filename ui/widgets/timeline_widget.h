@@ -10,6 +10,7 @@
 #include "ui/document/document.h"
 #include "ui/widgets/frame_axis.h"
 
+class QComboBox;
 class QLabel;
 class QPainter;
 class QProgressBar;
@@ -69,6 +70,7 @@ public:
   TimelineWidget* timeline() const { return timeline_; }
   QLabel* validityLabel() const { return validity_; }
   QPushButton* detectButton() const { return detect_; }
+  QComboBox* trackerChoice() const { return tracker_; }
   QLabel* detectionLabel() const { return detection_; }
   // Jumps to the issue at `index` of Document::issues() (what clicking its link does).
   void jumpToIssue(int index);
@@ -84,6 +86,7 @@ private:
   TimelineWidget* timeline_;
   QLabel* validity_;
   QPushButton* detect_;
+  QComboBox* tracker_;
   QPushButton* cancel_;
   QProgressBar* progress_;
   QLabel* detection_;
