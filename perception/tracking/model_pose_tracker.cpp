@@ -25,7 +25,8 @@ struct ModelPoseTracker::State {
   std::vector<ColorHistograms> colors;
   std::vector<double> reference_contrast;  // running mean of each part's accepted contrast
   std::vector<std::optional<Pose>> previous;  // the pose a frame before, while seen in both
-  std::vector<std::vector<Eigen::Vector2d>> centres;  // image of the centre, last frames seen in a row
+  std::vector<std::vector<Eigen::Vector2d>> centres;  // image of the centre, the last three frames seen
+  std::vector<bool> seen_last;                        // seen in the last frame
   std::vector<RenderMesh> silhouettes;  // untextured meshes for the occlusion map
   cv::Mat furniture_depth;              // the furniture at the occlusion map's scale; empty: none
   cv::Mat last_gray;                    // the last frame, for the surface points' flow
@@ -71,6 +72,7 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.reference_contrast.assign(models_.size(), 0.0);
   s.previous.assign(models_.size(), std::nullopt);
   s.centres.assign(models_.size(), {});
+  s.seen_last.assign(models_.size(), true);
   for (const auto& m : models_) {
     RenderMesh flat;
     flat.vertices = m.mesh.vertices;
@@ -154,7 +156,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
   cv::Mat gray;
   cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
   std::vector<bool> follow(models_.size());
-  for (size_t k = 0; k < models_.size(); ++k) follow[k] = !s.centres[k].empty();  // seen in the last frame
+  for (size_t k = 0; k < models_.size(); ++k) follow[k] = s.previous[k].has_value() || s.seen_last[k];
   const auto points = follow_surface_points(s.last_gray, gray, map, s.camera_T_part, follow, s.intrinsics, options_.flow);
   s.last_gray = gray;
   // At rest: the image of the part's centre barely moved in the last three frames seen.
@@ -163,7 +165,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     resting[k] = s.centres[k].size() >= 3;
     for (size_t i = 1; resting[k] && i < s.centres[k].size(); ++i)
       resting[k] = (s.centres[k][i] - s.centres[k].front()).norm() < options_.rest_px;
-    moving[k] = !s.centres[k].empty() && !resting[k];
+    moving[k] = s.seen_last[k] && !resting[k];
   }
   std::vector<PoseObservation> seen;
   std::vector<bool> found(models_.size(), false), learn(models_.size(), false), learn_part(models_.size(), false);
@@ -193,15 +195,33 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     if (!is_seen(r)) {
       // Found elsewhere: only on clearer evidence than a frame tracked on.
       const RegionFrameResult found_again = search(image, part, map);
-      if (found_again.contrast >= options_.search_contrast * s.reference_contrast[k] && is_seen(found_again)) r = found_again;
+      if (found_again.contrast >= options_.search_contrast * s.reference_contrast[k] && is_seen(found_again) &&
+          found_again.used_lines >= options_.search_used_fraction * found_again.lines)
+        r = found_again;
     }
+    s.seen_last[k] = is_seen(r);
     if (!is_seen(r)) {
+      // Keeps its last pose, and whether it rested there: not being seen is no move.
       s.previous[k].reset();
-      s.centres[k].clear();
-      continue;  // keeps its last pose
+      continue;
     }
     const Eigen::Vector3d c = r.camera_T_part * contours_[k]->centre();
-    s.centres[k].push_back({s.intrinsics.fx * c.x() / c.z(), s.intrinsics.fy * c.y() / c.z()});
+    if (resting[k] && r.hidden_lines > options_.rest_hidden_fraction * r.lines) {
+      // Mostly hidden by other parts or the furniture: what shows of a resting part is too
+      // little to move it by; it stays, unmeasured.
+      continue;
+    }
+    if (resting[k]) {
+      // A resting part stays put for moves within the measurement's own scatter (the image of
+      // its centre within rest_hold_px, its turn within rest_hold_deg): only a real move breaks
+      // the rest, and partly hidden parts do not creep.
+      const Eigen::Vector2d now(s.intrinsics.fx * c.x() / c.z(), s.intrinsics.fy * c.y() / c.z());
+      const double turn = Eigen::AngleAxisd(s.camera_T_part[k].linear().transpose() * r.camera_T_part.linear()).angle();
+      if ((now - s.centres[k].back()).norm() < options_.rest_hold_px && turn < options_.rest_hold_deg * M_PI / 180)
+        r.camera_T_part = s.camera_T_part[k];
+    }
+    const Eigen::Vector3d held = r.camera_T_part * contours_[k]->centre();
+    s.centres[k].push_back({s.intrinsics.fx * held.x() / held.z(), s.intrinsics.fy * held.y() / held.z()});
     if (s.centres[k].size() > 3) s.centres[k].erase(s.centres[k].begin());
     s.previous[k] = s.camera_T_part[k];
     s.camera_T_part[k] = r.camera_T_part;
@@ -264,7 +284,9 @@ RegionFrameResult ModelPoseTracker::search(const cv::Mat& image, int k, const Oc
   std::partial_sort(candidates.begin(), candidates.begin() + tries, candidates.end(),
                     [](auto& a, auto& b) { return a.first > b.first; });
   for (size_t i = 0; i < tries; ++i) {
-    const RegionFrameResult r = track_region(image, s.intrinsics, model, s.colors[k], candidates[i].second, map, k, options_.region);
+    // At the last depth: a candidate across the view says nothing about it.
+    const RegionFrameResult r =
+        track_region(image, s.intrinsics, model, s.colors[k], candidates[i].second, map, k, options_.region, true);
     if (i == 0 || r.contrast > best.contrast) best = r;
   }
   return best;

@@ -46,11 +46,15 @@ struct ModelTrackerOptions {
   double reference_rate = 0.1;       // of the running mean
   // A part not seen is looked for across the view up to this many of its radii from its last
   // pose (candidates scored by contrast; the best `search_tries` tracked from).
-  double search_radii = 4.0;
+  double search_radii = 2.5;
   int search_tries = 3;
   double search_contrast = 0.9;   // of the running mean: a part found by the search
+  double search_used_fraction = 0.5;  // of its lines finding an edge: a part found by the search
   double prediction = 0.8;        // of the last frame's motion across the view, carried on
   double rest_px = 1.0;           // a part whose centre's image moved less over 3 frames holds its depth
+  double rest_hold_px = 2.0;      // a resting part's smaller moves (and turns) are not taken
+  double rest_hold_deg = 2.0;
+  double rest_hidden_fraction = 0.4;  // of its lines hidden: a resting part is not measured
 };
 
 class ModelPoseTracker final : public PoseTracker {

@@ -59,6 +59,7 @@ struct Line {
 
 struct Pass {
   std::vector<Line> lines;
+  int hidden = 0;
   double contrast_sum = 0.0;
   int contrast_lines = 0;
 };
@@ -74,16 +75,18 @@ Pass correspondence_pass(const cv::Mat& image, const PinholeIntrinsics& K, const
     Projected p;
     if (!project(cp, T, K, p)) continue;
     const double inner_px = cp.inner * p.px_per_m, outer_px = cp.outer * p.px_per_m;
-    bool ok = true;
+    bool ok = true, hidden = false;
     for (int i = -N; i < N && ok; ++i) {
       const double x = (i + 0.5) * scale;
       const Eigen::Vector2d q = p.pixel + x * p.normal;
       cv::Vec3b c;
       if (!pixel_at(image, q, c)) ok = false;
       // Hidden where the line crosses the part: whatever is in front outside it is background.
-      else if (i < 0 && !occlusion.empty() && occlusion.hides(q.x(), q.y(), part, static_cast<float>(p.camera.z()))) ok = false;
+      else if (i < 0 && !occlusion.empty() && occlusion.hides(q.x(), q.y(), part, static_cast<float>(p.camera.z())))
+        ok = false, hidden = true;
       else pf[i + N] = colors.foreground_probability(c);
     }
+    pass.hidden += hidden;
     if (!ok) continue;
     // Each candidate edge position d_k = k * scale, scored on the 2W samples around it: part
     // colours before the edge, surroundings after it, through a smoothed step.
@@ -206,6 +209,7 @@ RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& K,
     const Pass pass = correspondence_pass(image, K, view, colors, T, occlusion, part, scale, o);
     result.lines = static_cast<int>(view.points.size());
     result.used_lines = static_cast<int>(pass.lines.size());
+    result.hidden_lines = pass.hidden;
     result.contrast = pass.contrast_lines ? pass.contrast_sum / pass.contrast_lines : 0.0;
     if (pass.lines.size() + points.size() < 6) continue;  // too little to fix six degrees of freedom
     T = newton_steps(pass, points, K, model.centre(), T, o, held_ray);

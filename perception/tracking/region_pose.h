@@ -55,6 +55,7 @@ struct RegionFrameResult {
   Pose camera_T_part = Pose::Identity();
   int lines = 0;         // contour points of the view
   int used_lines = 0;    // inside the image, not hidden, with an edge found (last pass)
+  int hidden_lines = 0;  // where something nearer covers the part (last pass)
   double contrast = 0.0;  // mean P(part) inside minus outside the contour, -1..1 (last pass)
 };
 
