@@ -4,23 +4,9 @@
 #include <limits>
 
 #include "core/geometry/ray_box.h"
+#include "perception/camera/look_at.h"
 
 namespace demoplan::perception {
-
-namespace {
-
-Pose look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
-  const Eigen::Vector3d z = (target - eye).normalized();
-  const Eigen::Vector3d x = z.cross(Eigen::Vector3d::UnitZ()).normalized();
-  Pose T = Pose::Identity();
-  T.linear().col(0) = x;
-  T.linear().col(1) = z.cross(x);
-  T.linear().col(2) = z;
-  T.translation() = eye;
-  return T;
-}
-
-}  // namespace
 
 bool segment_hits_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::AlignedBox3d& box) {
   // The last 5 cm before `b` do not count: the point itself may lie on the box.

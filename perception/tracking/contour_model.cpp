@@ -6,24 +6,12 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "perception/camera/look_at.h"
 #include "perception/render/rasterizer.h"
 
 namespace demoplan::perception {
 
 namespace {
-
-// A camera at `eye` looking at `target` (OpenCV axes: z forward, y down).
-Pose look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
-  const Eigen::Vector3d z = (target - eye).normalized();
-  const Eigen::Vector3d helper = std::abs(z.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
-  const Eigen::Vector3d x = helper.cross(z).normalized();
-  Pose T = Pose::Identity();
-  T.linear().col(0) = x;
-  T.linear().col(1) = z.cross(x);
-  T.linear().col(2) = z;
-  T.translation() = eye;
-  return T;
-}
 
 // Steps along the unit image direction d from p until the mask value changes from `inside`;
 // returns the number of steps taken (at most `max_steps`).
