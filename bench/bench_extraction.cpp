@@ -24,6 +24,7 @@
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/synthetic_video.h"
+#include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/marker_pose_tracker.h"
 #include "perception/tracking/model_pose_tracker.h"
 #include "perception/tracking/tracker_init.h"
@@ -91,6 +92,9 @@ int main(int argc, char** argv) {
                                      : fs::path(keep);
   const std::vector<std::string> tasks = quick ? std::vector<std::string>{"shelf_0"}
                                                : std::vector<std::string>{"shelf_0", "shelf_1", "shelf_2", "tunnel_0", "waiter_0"};
+  // The contour models as the CLI keeps them: built on the first video of a part, read back after.
+  ModelTrackerOptions model_options;
+  model_options.contour_cache = (root / "contours").string();
   const std::vector<Condition> conditions =
       model ? std::vector<Condition>{{"clean", 0, 0, false, false},
                                      {"noise 6 + blur 3 px", 6, 3, false, false},
@@ -132,7 +136,7 @@ int main(int argc, char** argv) {
       std::unique_ptr<PoseTracker> tracker;
       if (model)
         tracker = std::make_unique<ModelPoseTracker>(model_parts(scene, s.scene, data), load_tracker_init(s.init), s.init,
-                                                     marker_scene_furniture_meshes(scene, s.scene, data));
+                                                     marker_scene_furniture_meshes(scene, s.scene, data), model_options);
       else tracker = std::make_unique<MarkerPoseTracker>(scene);
       const ExtractionResult r = extract_demonstration(s.video, load_camera(s.camera), *tracker, scene.task, eo);
       const Demonstration truth = load_demonstration(s.truth);

@@ -14,6 +14,7 @@
 #include "perception/extraction/tracks_overlay.h"
 #include "perception/render/part_meshes.h"
 #include "perception/markers/marker_scene.h"
+#include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/marker_pose_tracker.h"
 #include "perception/tracking/model_pose_tracker.h"
 #include "perception/tracking/tracker_init.h"
@@ -61,9 +62,12 @@ int run_extract(const ExtractCliOptions& o) {
     if (init.empty()) init = (std::filesystem::path(o.scene).parent_path() / "init.json").string();
     if (!std::filesystem::is_regular_file(init))
       throw InputError(init, "", "the model tracker needs every part's pose in the first frame: no such file (use --init)");
+    perception::ModelTrackerOptions model_options;
+    model_options.contour_cache = perception::default_contour_cache_folder();
     tracker = std::make_unique<perception::ModelPoseTracker>(perception::model_parts(scene, o.scene, o.data_dir),
                                                              perception::load_tracker_init(init), init,
-                                                             perception::marker_scene_furniture_meshes(scene, o.scene, o.data_dir));
+                                                             perception::marker_scene_furniture_meshes(scene, o.scene, o.data_dir),
+                                                             model_options);
   } else {
     tracker = std::make_unique<perception::MarkerPoseTracker>(scene);
   }

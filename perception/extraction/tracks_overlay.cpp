@@ -15,8 +15,8 @@ void write_tracks_overlay(const std::string& video_path, const Camera& camera, c
                           const std::vector<RenderMesh>& meshes, const std::string& out) {
   if (!camera.world_T_camera) throw std::logic_error("write_tracks_overlay: the camera has no pose");
   if (meshes.size() != tracks.object_ids.size()) throw std::logic_error("write_tracks_overlay: a mesh per track row");
-  std::vector<RenderMesh> silhouettes;  // geometry only: nothing to texture
-  for (const auto& m : meshes) silhouettes.push_back({m.vertices, {}, m.triangles});
+  std::vector<RenderMesh> silhouettes;
+  for (const auto& m : meshes) silhouettes.push_back(m.geometry());
   VideoReader video(video_path, 2);
   VideoWriter writer(out, video.fps(), video.size());
   std::vector<std::optional<Pose>> last(tracks.object_ids.size());

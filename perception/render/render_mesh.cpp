@@ -14,6 +14,14 @@ Eigen::AlignedBox3f RenderMesh::bounds() const {
   return box;
 }
 
+RenderMesh RenderMesh::geometry() const {
+  RenderMesh out;
+  out.vertices = vertices;
+  out.triangles = triangles;
+  out.color = color;
+  return out;
+}
+
 void RenderMesh::append(const RenderMesh& other, const Pose& transform) {
   const auto base = static_cast<std::uint32_t>(vertices.size());
   const Eigen::Affine3f T = transform.cast<float>();

@@ -21,6 +21,9 @@ struct RenderMesh {
   cv::Vec3f color{200, 200, 200};    // BGR, 0..255
 
   Eigen::AlignedBox3f bounds() const;
+  // The same triangles without texture or coordinates: cheaper to draw where only coverage and
+  // depth count (silhouettes, occlusion).
+  RenderMesh geometry() const;
   void append(const RenderMesh& other, const Pose& transform);  // geometry only, colour kept
 };
 

@@ -100,9 +100,7 @@ ContourModel::ContourModel(const RenderMesh& mesh, const ContourModelOptions& o)
   const Eigen::AlignedBox3f box = mesh.bounds();
   centre_ = box.center().cast<double>();
   for (const auto& v : mesh.vertices) radius_ = std::max(radius_, (v.cast<double>() - centre_).norm());
-  RenderMesh silhouette;  // geometry only: no texture to sample
-  silhouette.vertices = mesh.vertices;
-  silhouette.triangles = mesh.triangles;
+  const RenderMesh silhouette = mesh.geometry();
   for (const auto& d : sphere_directions(o.views)) views_.push_back(render_view(silhouette, d, centre_, radius_, o));
 }
 

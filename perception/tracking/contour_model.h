@@ -33,6 +33,9 @@ struct ContourModelOptions {
 class ContourModel {
 public:
   explicit ContourModel(const RenderMesh& mesh, const ContourModelOptions& options = {});
+  // A model from its parts (as read back from a file, contour_model_file.h).
+  ContourModel(std::vector<ContourView> views, const Eigen::Vector3d& centre, double radius)
+      : views_(std::move(views)), centre_(centre), radius_(radius) {}
 
   // The view whose direction is nearest to `towards_camera` (part frame, need not be unit).
   const ContourView& nearest_view(const Eigen::Vector3d& towards_camera) const;

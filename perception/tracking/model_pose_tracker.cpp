@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "perception/render/part_meshes.h"
 #include "perception/render/rasterizer.h"
+#include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/surface_flow.h"
 
 namespace demoplan::perception {
@@ -49,10 +50,13 @@ ModelPoseTracker::~ModelPoseTracker() = default;
 
 void ModelPoseTracker::start(const TrackingStart& start) {
   if (contours_.empty()) {
-    // The silhouettes of every part from every direction: once, the parts in parallel.
+    // The silhouettes of every part from every direction: once (and kept on disk when a cache
+    // folder is given), the parts in parallel.
     std::vector<std::future<std::unique_ptr<ContourModel>>> jobs;
     for (const auto& m : models_)
-      jobs.push_back(std::async(std::launch::async, [&m, this] { return std::make_unique<ContourModel>(m.mesh, options_.contour); }));
+      jobs.push_back(std::async(std::launch::async, [&m, this] {
+        return std::make_unique<ContourModel>(cached_contour_model(m.mesh, options_.contour, options_.contour_cache));
+      }));
     for (auto& j : jobs) contours_.push_back(j.get());
   }
   state_ = std::make_unique<State>();
@@ -73,16 +77,11 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.previous.assign(models_.size(), std::nullopt);
   s.centres.assign(models_.size(), {});
   s.seen_last.assign(models_.size(), true);
-  for (const auto& m : models_) {
-    RenderMesh flat;
-    flat.vertices = m.mesh.vertices;
-    flat.triangles = m.mesh.triangles;
-    s.silhouettes.push_back(std::move(flat));
-  }
+  for (const auto& m : models_) s.silhouettes.push_back(m.mesh.geometry());
   if (!furniture_.empty()) {
     Rasterizer r = occlusion_rasterizer();
     for (const auto& f : furniture_)
-      r.draw({f.mesh.vertices, {}, f.mesh.triangles}, s.world_T_camera.inverse() * f.world_T_mesh);
+      r.draw(f.mesh.geometry(), s.world_T_camera.inverse() * f.world_T_mesh);
     s.furniture_depth = r.depth().clone();
   }
   s.tracks.fps = start.fps;

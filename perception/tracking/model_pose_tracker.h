@@ -35,6 +35,7 @@ struct ModelPart {
 
 struct ModelTrackerOptions {
   ContourModelOptions contour;
+  std::string contour_cache;  // folder keeping the contour models between runs; "": none
   RegionTrackingOptions region;
   SurfaceFlowOptions flow;
   // A part counts as seen in a frame when its contrast (region_pose.h) reaches both bars and

@@ -29,6 +29,7 @@
 #include "perception/importers/bop_csv.h"
 #include "perception/importers/hand_detections.h"
 #include "perception/markers/marker_scene.h"
+#include "perception/tracking/tracker_init.h"
 
 namespace fs = std::filesystem;
 using namespace demoplan;
@@ -198,11 +199,17 @@ TEST_F(FuzzRegressions, CharucoBoard) {
             0u);
 }
 
+TEST_F(FuzzRegressions, TrackerInit) {
+  EXPECT_GT(expect_each_input_loads_or_fails_cleanly("tracker_init", scratch.dir / "input.json",
+                                                     [](const std::string& f) { perception::load_tracker_init(f); }),
+            0u);
+}
+
 // Every fuzz target has a test above: a new tests/fuzz/fuzz_<target>.cpp needs one here too.
 TEST(FuzzRegressionsCoverage, EveryFuzzTargetIsReplayed) {
   const std::vector<std::string> replayed{"project", "cell", "demonstration", "path",         "urdf",    "srdf",
                                           "task",    "camera",        "camera_yaml",  "camera_xml", "marker_scene",
-                                          "bop_csv", "hand_detections", "tracks", "charuco_board"};
+                                          "bop_csv", "hand_detections", "tracks", "charuco_board", "tracker_init"};
   for (const auto& e : fs::directory_iterator(kSource / "tests/fuzz")) {
     const std::string name = e.path().filename().string();
     if (name.rfind("fuzz_", 0) != 0 || e.path().extension() != ".cpp") continue;

@@ -15,6 +15,7 @@
 #include "perception/render/rasterizer.h"
 #include "perception/synthetic/synthetic_video.h"
 #include "perception/tracking/contour_model.h"
+#include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/model_pose_tracker.h"
 #include "perception/tracking/region_pose.h"
 #include "perception/tracking/tracker_init.h"
@@ -55,6 +56,39 @@ TEST(ContourModel, PointsLieOnTheSilhouetteOfTheMesh) {
   const Eigen::Vector3d up(0.1, 0.2, 1.0);
   const ContourView& nearest = model.nearest_view(up);
   for (const auto& v : model.views()) EXPECT_LE(v.direction.dot(up.normalized().cast<float>()), nearest.direction.dot(up.normalized().cast<float>()));
+}
+
+TEST(ContourModelFile, ReadsBackWhatItWroteAndNothingElse) {
+  const fs::path dir = fs::temp_directory_path() / ("demoplan_contours_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  ContourModelOptions o;
+  o.views = 20;
+  const RenderMesh box = box_mesh(kBox, {0, 0, 255});
+  const std::uint64_t key = contour_model_key(box, o);
+  EXPECT_FALSE(read_contour_model(dir.string(), key));  // nothing there yet
+  const ContourModel built = cached_contour_model(box, o, dir.string());
+  const auto back = read_contour_model(dir.string(), key);
+  ASSERT_TRUE(back);
+  ASSERT_EQ(back->views().size(), built.views().size());
+  EXPECT_EQ(back->centre(), built.centre());
+  EXPECT_EQ(back->radius(), built.radius());
+  for (size_t v = 0; v < built.views().size(); ++v) {
+    ASSERT_EQ(back->views()[v].points.size(), built.views()[v].points.size());
+    for (size_t p = 0; p < built.views()[v].points.size(); ++p) {
+      EXPECT_EQ(back->views()[v].points[p].position, built.views()[v].points[p].position);
+      EXPECT_EQ(back->views()[v].points[p].outer, built.views()[v].points[p].outer);
+    }
+  }
+  // Another mesh or other options: another key, no stale model.
+  ContourModelOptions more = o;
+  more.points = 100;
+  EXPECT_NE(contour_model_key(box, more), key);
+  EXPECT_NE(contour_model_key(box_mesh(kBox * 1.01, {0, 0, 255}), o), key);
+  // A damaged file is not read.
+  const auto file = *fs::directory_iterator(dir);
+  fs::resize_file(file.path(), fs::file_size(file.path()) / 2);
+  EXPECT_FALSE(read_contour_model(dir.string(), key));
+  fs::remove_all(dir);
 }
 
 TEST(RegionTracking, RecoversAPoseFromADisplacedStart) {

@@ -7,6 +7,7 @@
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/render/part_meshes.h"
+#include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/marker_pose_tracker.h"
 #include "perception/tracking/model_pose_tracker.h"
 
@@ -56,12 +57,15 @@ bool ExtractionRunner::start(ExtractionJob job) {
         post([this, done, total] { emit progress(done, total); });
       };
       std::unique_ptr<perception::PoseTracker> tracker;
-      if (job.model_tracker)
+      if (job.model_tracker) {
+        perception::ModelTrackerOptions model_options;
+        model_options.contour_cache = perception::default_contour_cache_folder();
         tracker = std::make_unique<perception::ModelPoseTracker>(
             perception::model_parts(scene, job.markers, job.data_dir), job.init, job.init_source,
-            perception::marker_scene_furniture_meshes(scene, job.markers, job.data_dir));
-      else
+            perception::marker_scene_furniture_meshes(scene, job.markers, job.data_dir), model_options);
+      } else {
         tracker = std::make_unique<perception::MarkerPoseTracker>(scene);
+      }
       const perception::ExtractionResult r = perception::extract_demonstration(job.video, camera, *tracker, job.task, options);
       if (!r.cancelled) {
         outcome->demonstration = reorder_objects(r.demonstration, job.object_ids, job.markers);
