@@ -135,8 +135,7 @@ int main(int argc, char** argv) {
       }
       std::unique_ptr<PoseTracker> tracker;
       if (model)
-        tracker = std::make_unique<ModelPoseTracker>(model_parts(scene, s.scene, data), load_tracker_init(s.init), s.init,
-                                                     marker_scene_furniture_meshes(scene, s.scene, data), model_options);
+        tracker = make_model_tracker(scene, s.scene, data, load_tracker_init(s.init), s.init, model_options);
       else tracker = std::make_unique<MarkerPoseTracker>(scene);
       const ExtractionResult r = extract_demonstration(s.video, load_camera(s.camera), *tracker, scene.task, eo);
       const Demonstration truth = load_demonstration(s.truth);

@@ -64,10 +64,8 @@ int run_extract(const ExtractCliOptions& o) {
       throw InputError(init, "", "the model tracker needs every part's pose in the first frame: no such file (use --init)");
     perception::ModelTrackerOptions model_options;
     model_options.contour_cache = perception::default_contour_cache_folder();
-    tracker = std::make_unique<perception::ModelPoseTracker>(perception::model_parts(scene, o.scene, o.data_dir),
-                                                             perception::load_tracker_init(init), init,
-                                                             perception::marker_scene_furniture_meshes(scene, o.scene, o.data_dir),
-                                                             model_options);
+    tracker = perception::make_model_tracker(scene, o.scene, o.data_dir, perception::load_tracker_init(init), init,
+                                             model_options);
   } else {
     tracker = std::make_unique<perception::MarkerPoseTracker>(scene);
   }

@@ -20,9 +20,9 @@ void write_tracks_overlay(const std::string& video_path, const Camera& camera, c
   VideoReader video(video_path, 2);
   VideoWriter writer(out, video.fps(), video.size());
   std::vector<std::optional<Pose>> last(tracks.object_ids.size());
+  Rasterizer r(video.size(), camera.fx, camera.fy, camera.cx, camera.cy, *camera.world_T_camera);
   for (int f = 0; f < video.frame_count(); ++f) {
     cv::Mat frame = video.frame(f).clone();
-    Rasterizer r(video.size(), camera.fx, camera.fy, camera.cx, camera.cy, *camera.world_T_camera);
     for (size_t k = 0; k < silhouettes.size(); ++k) {
       const bool seen = f < tracks.frames && tracks.samples[k][f].valid;
       if (seen) last[k] = tracks.samples[k][f].pose;

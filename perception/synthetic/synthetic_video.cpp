@@ -58,14 +58,18 @@ struct Assets {
   std::vector<std::pair<Pose, Eigen::Vector2d>> board_tops;
 };
 
+Eigen::AlignedBox3d world_box(const FurnitureMesh& f) {
+  Eigen::AlignedBox3d box;
+  for (const auto& v : f.mesh.vertices) box.extend(f.world_T_mesh * v.cast<double>());
+  return box;
+}
+
 Assets load_assets(const BenchmarkTask& task) {
   Assets a;
   MeshCache cache;
   double best_area = 0;
   for (auto& f : furniture_meshes(task)) {
-    Eigen::AlignedBox3d box;
-    for (const auto& v : f.mesh.vertices) box.extend(f.world_T_mesh * v.cast<double>());
-    a.obstacles.push_back(box);
+    a.obstacles.push_back(world_box(f));
     if (f.box && f.kind == "table" && f.box->x() * f.box->y() > best_area) {
       best_area = f.box->x() * f.box->y();
       a.table_top = f.world_T_link;
@@ -89,9 +93,7 @@ Assets load_assets(const BenchmarkTask& task) {
 Assets scene_assets(const Scene& scene) {
   Assets a;
   for (auto& f : furniture_meshes(scene)) {
-    Eigen::AlignedBox3d box;
-    for (const auto& v : f.mesh.vertices) box.extend(f.world_T_mesh * v.cast<double>());
-    a.obstacles.push_back(box);
+    a.obstacles.push_back(world_box(f));
     if (f.box && f.world_T_mesh.linear().col(2).z() > 0.99) {
       Pose top = f.world_T_mesh;
       top.translation() += top.linear().col(2) * (f.box->z() / 2);

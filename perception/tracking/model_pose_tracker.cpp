@@ -89,7 +89,6 @@ void ModelPoseTracker::start(const TrackingStart& start) {
     s.tracks.object_ids.push_back(p.id);
     s.tracks.planning.push_back(p.planning);
   }
-  s.tracks.samples.assign(parts_.size(), {});
   s.tracks.resize(std::max(start.frames, 0));
 }
 
@@ -142,10 +141,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], map, static_cast<int>(k), s.colors[k],
                    options_.region);
     // Parts rest where a demonstration starts: each holds its depth from the first frame on.
-    for (size_t k = 0; k < models_.size(); ++k) {
-      const Eigen::Vector3d c = s.camera_T_part[k] * contours_[k]->centre();
-      s.centres[k].assign(3, Eigen::Vector2d(s.intrinsics.fx * c.x() / c.z(), s.intrinsics.fy * c.y() / c.z()));
-    }
+    for (size_t k = 0; k < models_.size(); ++k) s.centres[k].assign(3, centre_in_image(k, s.camera_T_part[k]));
     for (size_t k = 0; k < models_.size(); ++k)
       s.reference_contrast[k] = track_region(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
                                              static_cast<int>(k), options_.region).contrast;
@@ -154,9 +150,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
   const OcclusionMap map = occlusion_map();
   cv::Mat gray;
   cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
-  std::vector<bool> follow(models_.size());
-  for (size_t k = 0; k < models_.size(); ++k) follow[k] = s.previous[k].has_value() || s.seen_last[k];
-  const auto points = follow_surface_points(s.last_gray, gray, map, s.camera_T_part, follow, s.intrinsics, options_.flow);
+  const auto points = follow_surface_points(s.last_gray, gray, map, s.camera_T_part, s.seen_last, s.intrinsics, options_.flow);
   s.last_gray = gray;
   // At rest: the image of the part's centre barely moved in the last three frames seen.
   std::vector<bool> resting(models_.size()), moving(models_.size());
@@ -167,7 +161,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     moving[k] = s.seen_last[k] && !resting[k];
   }
   std::vector<PoseObservation> seen;
-  std::vector<bool> found(models_.size(), false), learn(models_.size(), false), learn_part(models_.size(), false);
+  std::vector<bool> learn(models_.size(), false), learn_part(models_.size(), false);
   for (size_t k = 0; k < models_.size(); ++k) {
     const int part = static_cast<int>(k);
     // A resting part that a moving one passes in front of stays where it is, unmeasured: what
@@ -204,7 +198,6 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       s.previous[k].reset();
       continue;
     }
-    const Eigen::Vector3d c = r.camera_T_part * contours_[k]->centre();
     if (resting[k] && r.hidden_lines > options_.rest_hidden_fraction * r.lines) {
       // Mostly hidden by other parts or the furniture: what shows of a resting part is too
       // little to move it by; it stays, unmeasured.
@@ -214,20 +207,18 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       // A resting part stays put for moves within the measurement's own scatter (the image of
       // its centre within rest_hold_px, its turn within rest_hold_deg): only a real move breaks
       // the rest, and partly hidden parts do not creep.
-      const Eigen::Vector2d now(s.intrinsics.fx * c.x() / c.z(), s.intrinsics.fy * c.y() / c.z());
+      const Eigen::Vector2d now = centre_in_image(k, r.camera_T_part);
       const double turn = Eigen::AngleAxisd(s.camera_T_part[k].linear().transpose() * r.camera_T_part.linear()).angle();
       if ((now - s.centres[k].back()).norm() < options_.rest_hold_px && turn < options_.rest_hold_deg * M_PI / 180)
         r.camera_T_part = s.camera_T_part[k];
     }
-    const Eigen::Vector3d held = r.camera_T_part * contours_[k]->centre();
-    s.centres[k].push_back({s.intrinsics.fx * held.x() / held.z(), s.intrinsics.fy * held.y() / held.z()});
+    s.centres[k].push_back(centre_in_image(k, r.camera_T_part));
     if (s.centres[k].size() > 3) s.centres[k].erase(s.centres[k].begin());
     s.previous[k] = s.camera_T_part[k];
     s.camera_T_part[k] = r.camera_T_part;
     learn[k] = r.contrast >= options_.learn_contrast * s.reference_contrast[k];
     learn_part[k] = resting[k];
     s.reference_contrast[k] += options_.reference_rate * (r.contrast - s.reference_contrast[k]);
-    found[k] = true;
     PoseSample& sample = s.tracks.samples[k][frame];
     sample.valid = true;
     sample.pose = s.world_T_camera * r.camera_T_part;
@@ -243,12 +234,18 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
   return seen;
 }
 
+Eigen::Vector2d ModelPoseTracker::centre_in_image(size_t k, const Pose& camera_T_part) const {
+  const PinholeIntrinsics& K = state_->intrinsics;
+  const Eigen::Vector3d c = camera_T_part * contours_[k]->centre();
+  return {K.fx * c.x() / c.z(), K.fy * c.y() / c.z()};
+}
+
 bool ModelPoseTracker::passed_in_front(size_t k, const std::vector<bool>& moving) const {
   const State& s = *state_;
   auto disc = [&](size_t i, Eigen::Vector2d& centre, double& radius, double& depth) {
     const Eigen::Vector3d c = s.camera_T_part[i] * contours_[i]->centre();
     if (c.z() < 0.05) return false;
-    centre = {s.intrinsics.fx * c.x() / c.z(), s.intrinsics.fy * c.y() / c.z()};
+    centre = centre_in_image(i, s.camera_T_part[i]);
     radius = contours_[i]->radius() * s.intrinsics.fx / c.z();
     depth = c.z();
     return true;
@@ -296,11 +293,14 @@ PoseTracks ModelPoseTracker::finish() {
   return state_->tracks;
 }
 
-std::vector<ModelPart> model_parts(const MarkerScene& scene, const std::string& scene_file, const std::string& data_dir) {
+std::unique_ptr<ModelPoseTracker> make_model_tracker(const MarkerScene& scene, const std::string& scene_file,
+                                                     const std::string& data_dir, TrackerInit init,
+                                                     std::string init_source, const ModelTrackerOptions& options) {
   std::vector<RenderMesh> meshes = marker_scene_part_meshes(scene, scene_file, data_dir);
   std::vector<ModelPart> parts;
   for (size_t k = 0; k < scene.objects.size(); ++k) parts.push_back({scene.objects[k].id, scene.objects[k].planning, std::move(meshes[k])});
-  return parts;
+  return std::make_unique<ModelPoseTracker>(std::move(parts), std::move(init), std::move(init_source),
+                                            marker_scene_furniture_meshes(scene, scene_file, data_dir), options);
 }
 
 }  // namespace demoplan::perception

@@ -76,6 +76,9 @@ private:
   struct State;
   OcclusionMap occlusion_map() const;
   Rasterizer occlusion_rasterizer() const;  // at the occlusion map's scale, cleared
+  // Where the centre of part k's model shows in the image at that pose, relative to the
+  // principal point (only differences and distances of these are used).
+  Eigen::Vector2d centre_in_image(size_t k, const Pose& camera_T_part) const;
   // Whether a moving part, nearer the camera, overlaps part k's image (bounding circles).
   bool passed_in_front(size_t k, const std::vector<bool>& moving) const;
   // Part k looked for around its last pose: the best of the tracked candidates.
@@ -90,8 +93,10 @@ private:
   std::unique_ptr<State> state_;
 };
 
-// The parts of a marker scene (markers, if any, are not used) with their meshes from the task or
-// cell the scene names (part_meshes.h).
-std::vector<ModelPart> model_parts(const MarkerScene& scene, const std::string& scene_file, const std::string& data_dir);
+// The tracker for the parts of a marker scene (its markers, if any, are not used): their meshes
+// and the furniture from the task or cell the scene names (part_meshes.h), in `data_dir`.
+std::unique_ptr<ModelPoseTracker> make_model_tracker(const MarkerScene& scene, const std::string& scene_file,
+                                                     const std::string& data_dir, TrackerInit init,
+                                                     std::string init_source, const ModelTrackerOptions& options = {});
 
 }  // namespace demoplan::perception

@@ -173,9 +173,8 @@ TEST(ModelTracker, FollowsThePartsOfAVideoWithoutMarkers) {
   const SynthOutput s = write_synthetic_demonstration(o, dir.string());
   const MarkerScene scene = load_marker_scene(s.scene);
   for (const auto& obj : scene.objects) EXPECT_TRUE(obj.markers.empty());
-  ModelPoseTracker tracker(model_parts(scene, s.scene, DEMOPLAN_DATA_DIR), load_tracker_init(s.init), s.init,
-                           marker_scene_furniture_meshes(scene, s.scene, DEMOPLAN_DATA_DIR));
-  const ExtractionResult r = extract_demonstration(s.video, load_camera(s.camera), tracker, scene.task);
+  const auto tracker = make_model_tracker(scene, s.scene, DEMOPLAN_DATA_DIR, load_tracker_init(s.init), s.init);
+  const ExtractionResult r = extract_demonstration(s.video, load_camera(s.camera), *tracker, scene.task);
   EXPECT_EQ(r.tracker, "model");
   const DemonstrationEvaluation e = evaluate_demonstration(r.demonstration, load_demonstration(s.truth), 2);
   EXPECT_EQ(e.matched, e.truth_events);

@@ -6,7 +6,6 @@
 #include "perception/camera/camera_model.h"
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/markers/marker_scene.h"
-#include "perception/render/part_meshes.h"
 #include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/marker_pose_tracker.h"
 #include "perception/tracking/model_pose_tracker.h"
@@ -60,9 +59,7 @@ bool ExtractionRunner::start(ExtractionJob job) {
       if (job.model_tracker) {
         perception::ModelTrackerOptions model_options;
         model_options.contour_cache = perception::default_contour_cache_folder();
-        tracker = std::make_unique<perception::ModelPoseTracker>(
-            perception::model_parts(scene, job.markers, job.data_dir), job.init, job.init_source,
-            perception::marker_scene_furniture_meshes(scene, job.markers, job.data_dir), model_options);
+        tracker = perception::make_model_tracker(scene, job.markers, job.data_dir, job.init, job.init_source, model_options);
       } else {
         tracker = std::make_unique<perception::MarkerPoseTracker>(scene);
       }
