@@ -1,6 +1,7 @@
 #include "perception/tracking/model_pose_tracker.h"
 
 #include <algorithm>
+#include <cmath>
 #include <future>
 #include <optional>
 #include <stdexcept>
@@ -37,9 +38,10 @@ struct ModelPoseTracker::State {
 
 ModelPoseTracker::ModelPoseTracker(std::vector<ModelPart> parts, TrackerInit init, std::string init_source,
                                    std::vector<FurnitureMesh> furniture, const ModelTrackerOptions& options)
-    : models_(std::move(parts)), furniture_(std::move(furniture)), init_(std::move(init)), options_(options) {
+    : models_(std::move(parts)), furniture_(std::move(furniture)), init_(std::move(init)),
+      init_source_(std::move(init_source)), options_(options) {
   for (const auto& m : models_) {
-    if (!init_.find(m.id)) throw InputError(init_source, "parts", "no starting pose for part '" + m.id + "'");
+    if (!init_.find(m.id)) throw InputError(init_source_, "parts", "no starting pose for part '" + m.id + "'");
     if (m.mesh.triangles.empty()) throw InputError(m.id, "mesh", "the part has no mesh to track");
     const Eigen::AlignedBox3f b = m.mesh.bounds();
     parts_.push_back({m.id, m.planning, Eigen::AlignedBox3d(b.min().cast<double>(), b.max().cast<double>())});
@@ -83,6 +85,22 @@ void ModelPoseTracker::start(const TrackingStart& start) {
     for (const auto& f : furniture_)
       r.draw(f.mesh.geometry(), s.world_T_camera.inverse() * f.world_T_mesh);
     s.furniture_depth = r.depth().clone();
+  }
+  // A start that puts a part behind the camera or its centre beside the picture is a wrong
+  // placement, not a part to look for.
+  for (size_t i = 0; i < init_.parts.size(); ++i) {
+    const PartStart& p = init_.parts[i];
+    const auto model = std::find_if(models_.begin(), models_.end(), [&](const ModelPart& m) { return m.id == p.id; });
+    if (model == models_.end()) continue;
+    const Eigen::Vector3d c = s.world_T_camera.inverse() * p.world_T_object * contours_[model - models_.begin()]->centre();
+    const std::string field = "parts[" + std::to_string(i) + "].world_T_object";
+    if (c.z() < 0.05) throw InputError(init_source_, field, "puts part '" + p.id + "' behind the camera");
+    const double u = s.intrinsics.fx * c.x() / c.z() + s.intrinsics.cx, v = s.intrinsics.fy * c.y() / c.z() + s.intrinsics.cy;
+    if (u < 0 || v < 0 || u >= s.image_size.width || v >= s.image_size.height)
+      throw InputError(init_source_, field,
+                       "puts part '" + p.id + "' outside the " + std::to_string(s.image_size.width) + "x" +
+                           std::to_string(s.image_size.height) + " image (its centre at pixel " +
+                           std::to_string(static_cast<int>(u)) + ", " + std::to_string(static_cast<int>(v)) + ")");
   }
   s.tracks.fps = start.fps;
   for (const auto& p : parts_) {
@@ -136,6 +154,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     // The starting poses, and what the parts and their surroundings look like there.
     for (size_t k = 0; k < models_.size(); ++k)
       s.camera_T_part[k] = s.world_T_camera.inverse() * init_.find(models_[k].id)->world_T_object;
+    for (size_t k = 0; k < models_.size(); ++k) settle_start(image, k);
     const OcclusionMap map = occlusion_map();
     for (size_t k = 0; k < models_.size(); ++k)
       learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], map, static_cast<int>(k), s.colors[k],
@@ -192,6 +211,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
           found_again.used_lines >= options_.search_used_fraction * found_again.lines)
         r = found_again;
     }
+    const bool seen_before = s.seen_last[k];
     s.seen_last[k] = is_seen(r);
     if (!is_seen(r)) {
       // Keeps its last pose, and whether it rested there: not being seen is no move.
@@ -214,7 +234,12 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     }
     s.centres[k].push_back(centre_in_image(k, r.camera_T_part));
     if (s.centres[k].size() > 3) s.centres[k].erase(s.centres[k].begin());
-    s.previous[k] = s.camera_T_part[k];
+    // Motion is carried on only between frames both seen: a part found again after a gap did
+    // not move from its stale pose in one frame.
+    if (seen_before)
+      s.previous[k] = s.camera_T_part[k];
+    else
+      s.previous[k].reset();
     s.camera_T_part[k] = r.camera_T_part;
     learn[k] = r.contrast >= options_.learn_contrast * s.reference_contrast[k];
     learn_part[k] = resting[k];
@@ -232,6 +257,60 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], after, static_cast<int>(k), s.colors[k],
                    options_.region, learn_part[k]);
   return seen;
+}
+
+void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {
+  State& s = *state_;
+  const int part = static_cast<int>(k);
+  // What the part looks like, from the start frame alone: colours learnt at a start some
+  // centimetres off are half the part's and half its surroundings', and would hold the pose
+  // where it is. A GrabCut segmentation around the start (its silhouette probably the part,
+  // the rest of a box a radius larger probably not, the box's border surely not) separates the
+  // part from what lies around it by colour and coherence.
+  Rasterizer r(s.image_size, s.intrinsics.fx, s.intrinsics.fy, s.intrinsics.cx, s.intrinsics.cy, Pose::Identity());
+  r.clear({0, 0, 0}, {0, 0, 0});
+  r.draw(s.silhouettes[k], s.camera_T_part[k]);
+  const cv::Mat silhouette = r.depth() < 1e9f;
+  const cv::Rect inside = cv::boundingRect(silhouette);
+  if (inside.empty()) return;
+  const Eigen::Vector3d c = s.camera_T_part[k] * contours_[k]->centre();
+  const int margin = static_cast<int>(std::ceil(contours_[k]->radius() * s.intrinsics.fx / c.z()));
+  const cv::Rect roi = cv::Rect(inside.x - margin, inside.y - margin, inside.width + 2 * margin, inside.height + 2 * margin) &
+                       cv::Rect(cv::Point(0, 0), s.image_size);
+  cv::Mat mask(roi.size(), CV_8U, cv::Scalar(cv::GC_PR_BGD));
+  mask.setTo(cv::GC_PR_FGD, silhouette(roi));
+  cv::rectangle(mask, cv::Rect(cv::Point(0, 0), roi.size()), cv::Scalar(cv::GC_BGD), 3);
+  cv::Mat background_model, foreground_model;
+  cv::grabCut(image(roi), mask, cv::Rect(), background_model, foreground_model, options_.settle_grabcut_iterations,
+              cv::GC_INIT_WITH_MASK);
+  ColorHistograms colors;
+  for (int y = 0; y < roi.height; ++y)
+    for (int x = 0; x < roi.width; ++x) {
+      const cv::Vec3b& bgr = image.at<cv::Vec3b>(roi.y + y, roi.x + x);
+      const auto label = mask.at<std::uint8_t>(y, x);
+      if (label == cv::GC_FGD || label == cv::GC_PR_FGD)
+        colors.add_foreground(bgr);
+      else
+        colors.add_background(bgr);
+    }
+  colors.update();
+  // The start moved to where those colours put the part: across the view first (at the start's
+  // depth), then in depth too; each move kept only when the part then stands out clearly better
+  // (a start that is right stays as it is: the silhouette's size in particular is a weak cue,
+  // and a small bias of the segmentation would shift the depth by centimetres).
+  const OcclusionMap map = occlusion_map();
+  auto contrast = [&](const Pose& T) { return contour_contrast(image, s.intrinsics, *contours_[k], colors, T); };
+  for (const bool hold_depth : {true, false}) {
+    Pose T = s.camera_T_part[k];
+    for (int round = 0; round < options_.settle_rounds; ++round) {
+      const Pose next =
+          track_region(image, s.intrinsics, *contours_[k], colors, T, map, part, options_.region, hold_depth).camera_T_part;
+      const Pose step = T.inverse() * next;
+      T = next;
+      if (step.translation().norm() < 0.5e-3 && Eigen::AngleAxisd(step.linear()).angle() < 0.2 * M_PI / 180) break;
+    }
+    if (contrast(T) >= contrast(s.camera_T_part[k]) + options_.settle_contrast_gain) s.camera_T_part[k] = T;
+  }
 }
 
 Eigen::Vector2d ModelPoseTracker::centre_in_image(size_t k, const Pose& camera_T_part) const {

@@ -56,12 +56,18 @@ struct ModelTrackerOptions {
   double rest_hold_px = 2.0;      // a resting part's smaller moves (and turns) are not taken
   double rest_hold_deg = 2.0;
   double rest_hidden_fraction = 0.4;  // of its lines hidden: a resting part is not measured
+  // On the start frame: the part segmented around its start (GrabCut), and the start refined on
+  // that segmentation until it stays (at most this many rounds at its depth, as many free).
+  int settle_grabcut_iterations = 4;
+  int settle_rounds = 10;
+  double settle_contrast_gain = 0.03;  // a settled start is taken when it stands out this much more
 };
 
 class ModelPoseTracker final : public PoseTracker {
 public:
   // `furniture`: what may hide the parts (its contour lines there are left out). Throws
-  // InputError when `init` lacks a part's pose (naming the part).
+  // InputError when `init` lacks a part's pose (naming the part); start() throws it when a start
+  // puts a part behind the camera or its centre outside the image.
   ModelPoseTracker(std::vector<ModelPart> parts, TrackerInit init, std::string init_source,
                    std::vector<FurnitureMesh> furniture = {}, const ModelTrackerOptions& options = {});
   ~ModelPoseTracker() override;
@@ -75,6 +81,9 @@ public:
 private:
   struct State;
   OcclusionMap occlusion_map() const;
+  // Moves part k's start to where the start frame shows it (an operator's placement is a few
+  // millimetres to centimetres off).
+  void settle_start(const cv::Mat& image, size_t k);
   Rasterizer occlusion_rasterizer() const;  // at the occlusion map's scale, cleared
   // Where the centre of part k's model shows in the image at that pose, relative to the
   // principal point (only differences and distances of these are used).
@@ -87,6 +96,7 @@ private:
   std::vector<ModelPart> models_;
   std::vector<FurnitureMesh> furniture_;
   TrackerInit init_;
+  std::string init_source_;  // the start file, for messages
   ModelTrackerOptions options_;
   std::vector<TrackedPart> parts_;
   std::vector<std::unique_ptr<ContourModel>> contours_;  // built on the first start()
