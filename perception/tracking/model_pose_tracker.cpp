@@ -270,15 +270,23 @@ void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {
   Rasterizer r(s.image_size, s.intrinsics.fx, s.intrinsics.fy, s.intrinsics.cx, s.intrinsics.cy, Pose::Identity());
   r.clear({0, 0, 0}, {0, 0, 0});
   r.draw(s.silhouettes[k], s.camera_T_part[k]);
-  const cv::Mat silhouette = r.depth() < 1e9f;
+  const cv::Mat alone = r.depth().clone();
+  // What else is in front: the other parts and the furniture. A part mostly hidden at its start
+  // keeps it (too little of it shows to move it by); the others' pixels are surely not it.
+  for (size_t j = 0; j < models_.size(); ++j)
+    if (j != k) r.draw(s.silhouettes[j], s.camera_T_part[j]);
+  for (const auto& f : furniture_) r.draw(f.mesh.geometry(), s.world_T_camera.inverse() * f.world_T_mesh);
+  const cv::Mat silhouette = alone < 1e9f, hidden = r.depth() < alone, others = (r.depth() < 1e9f) & ~silhouette;
+  const int area = cv::countNonZero(silhouette);
+  if (area == 0 || cv::countNonZero(silhouette & ~hidden) < options_.settle_visible_fraction * area) return;
   const cv::Rect inside = cv::boundingRect(silhouette);
-  if (inside.empty()) return;
   const Eigen::Vector3d c = s.camera_T_part[k] * contours_[k]->centre();
   const int margin = static_cast<int>(std::ceil(contours_[k]->radius() * s.intrinsics.fx / c.z()));
   const cv::Rect roi = cv::Rect(inside.x - margin, inside.y - margin, inside.width + 2 * margin, inside.height + 2 * margin) &
                        cv::Rect(cv::Point(0, 0), s.image_size);
   cv::Mat mask(roi.size(), CV_8U, cv::Scalar(cv::GC_PR_BGD));
-  mask.setTo(cv::GC_PR_FGD, silhouette(roi));
+  mask.setTo(cv::GC_PR_FGD, silhouette(roi) & ~hidden(roi));
+  mask.setTo(cv::GC_BGD, hidden(roi) | others(roi));
   cv::rectangle(mask, cv::Rect(cv::Point(0, 0), roi.size()), cv::Scalar(cv::GC_BGD), 3);
   cv::Mat background_model, foreground_model;
   cv::grabCut(image(roi), mask, cv::Rect(), background_model, foreground_model, options_.settle_grabcut_iterations,
@@ -299,7 +307,14 @@ void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {
   // (a start that is right stays as it is: the silhouette's size in particular is a weak cue,
   // and a small bias of the segmentation would shift the depth by centimetres).
   const OcclusionMap map = occlusion_map();
-  auto contrast = [&](const Pose& T) { return contour_contrast(image, s.intrinsics, *contours_[k], colors, T); };
+  // Judged by how well the part stands out where it would be with colours learnt there, as the
+  // tracker will learn them: the segmentation proposes, it does not judge (parts with printed
+  // patterns or markers segment poorly).
+  auto contrast = [&](const Pose& T) {
+    ColorHistograms there;
+    learn_colors(image, s.intrinsics, *contours_[k], T, map, part, there, options_.region);
+    return contour_contrast(image, s.intrinsics, *contours_[k], there, T);
+  };
   for (const bool hold_depth : {true, false}) {
     Pose T = s.camera_T_part[k];
     for (int round = 0; round < options_.settle_rounds; ++round) {
@@ -309,7 +324,8 @@ void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {
       T = next;
       if (step.translation().norm() < 0.5e-3 && Eigen::AngleAxisd(step.linear()).angle() < 0.2 * M_PI / 180) break;
     }
-    if (contrast(T) >= contrast(s.camera_T_part[k]) + options_.settle_contrast_gain) s.camera_T_part[k] = T;
+    const double gain = hold_depth ? options_.settle_contrast_gain : options_.settle_depth_contrast_gain;
+    if (contrast(T) >= contrast(s.camera_T_part[k]) + gain) s.camera_T_part[k] = T;
   }
 }
 

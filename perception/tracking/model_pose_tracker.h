@@ -60,7 +60,9 @@ struct ModelTrackerOptions {
   // that segmentation until it stays (at most this many rounds at its depth, as many free).
   int settle_grabcut_iterations = 4;
   int settle_rounds = 10;
+  double settle_visible_fraction = 0.7;  // of its silhouette: a start less visible is kept as it is
   double settle_contrast_gain = 0.03;  // a settled start is taken when it stands out this much more
+  double settle_depth_contrast_gain = 0.1;  // and moved in depth, this much more
 };
 
 class ModelPoseTracker final : public PoseTracker {
