@@ -105,7 +105,7 @@ LoadedTask load_task_inputs(const TaskInputs& in) {
   t.task = load_benchmark_task(in.data_dir, in.task);
   auto scene = benchmark_scene_with_handles(t.task, in.robot, in.pose, in.handles);
   t.instance = in.demo.empty() ? make_task_instance(t.task, std::move(scene), in.from)
-                               : make_benchmark_instance(std::move(scene), load_demonstration(in.demo));
+                               : make_benchmark_instance(std::move(scene), settle_on_supports(*scene, load_demonstration(in.demo)));
   // Objects riding on the robot: say where they were put when it is not where the demonstrator
   // put them.
   const DeckPlacementReport& deck = t.instance.deck;

@@ -61,6 +61,28 @@ TEST_F(CliPlanning, PlanPrintsTheIssuesKeysAndAValidPath) {
   EXPECT_GT(j["path_length"]["object_m"].get<double>(), 0.2);
 }
 
+// Without markers (issue 16): shelf_1's video, its two parts followed by the model tracker from
+// their start poses, gives a demonstration the planner turns into a valid path (its measured
+// rest poses put onto their supports first).
+TEST_F(CliPlanning, AMarkerFreeDemonstrationIsPlannedValid) {
+  const std::string d = (dir_ / "no_markers").string();
+  const CliResult s = run({"synth", "--task", "shelf_1", "--no-markers", "--out", d, "--json"});
+  ASSERT_EQ(s.code, 0) << s.err;
+  const CliResult x = run({"extract", d + "/video.mp4", "--scene", d + "/scene.json", "--tracker", "model", "--out",
+                           d + "/demo.json", "--json"});
+  ASSERT_EQ(x.code, 0) << x.err;
+  const CliResult e = run({"evaluate", d + "/demo.json", "--truth", d + "/truth.json", "--json"});
+  ASSERT_EQ(e.code, 0) << e.err;
+  EXPECT_EQ(one_object(e)["event_recall"].get<double>(), 1.0) << e.out;
+  const CliResult r = run({"plan", "--task", "shelf_1", "--robot", "panda", "--pose", "0", "--demo", d + "/demo.json",
+                           "--seed", "1", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json j = one_object(r);
+  EXPECT_TRUE(j["solved"].get<bool>());
+  EXPECT_TRUE(j["valid"].get<bool>()) << j["validation_message"];
+  EXPECT_EQ(j["grasps"].get<int>(), 2);
+}
+
 TEST_F(CliPlanning, ValidateReadsThePlannedPathBack) {
   const CliResult r = run({"validate", planned().string(), "--task", "shelf_0", "--robot", "panda", "--pose", "1",
                            "--json"});

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "core/demo/settle_demonstration.h"
 #include "perception/tracking/tracker_init.h"
 #include "ui/document/document.h"
 
@@ -60,7 +61,9 @@ void EventDetection::onFinished(const ExtractionOutcome& o) {
     return;
   }
   if (o.ok)
-    doc_->replaceDemonstration(o.demonstration,
+    // Measured rest poses float a few millimetres above or sink into their supports: put onto
+    // them, as the planner needs (the CLI's plan does the same with a measured --demo).
+    doc_->replaceDemonstration(settle_on_supports(doc_->scene(), o.demonstration),
                                tr("Detect events in the video (%1 events)").arg(o.demonstration.events.size()));
   emit done(o);
 }
