@@ -268,6 +268,25 @@ TEST(ModelTracker, FindsAPartAgainAfterTenFramesFullyHidden) {
   }
 }
 
+// Carried out of the picture and brought back in (30 frames out): not reported while out,
+// found again once back, where it is.
+TEST(ModelTracker, FindsAPartThatLeftThePictureOnceItIsBack) {
+  std::vector<Pose> truth;
+  for (int f = 0; f < 60; ++f) {
+    // Out to the right (x 0.45 m: the whole box beyond the image's edge at 0.36 m), back to a
+    // place 6 cm from where it left.
+    const double out = f < 10 ? 0.0 : f < 20 ? (f - 10) / 10.0 : f < 40 ? 1.0 : f < 50 ? 1.0 - (f - 40) / 10.0 * 0.85 : 0.15;
+    truth.push_back(box_pose(-0.05 + out * 0.5, 0.0, 0.9));
+  }
+  const Clip clip = render_clip(truth, std::vector<bool>(truth.size(), false));
+  const PoseTracks tracks = track_clip(clip, truth[0]);
+  for (int f = 22; f < 40; ++f) EXPECT_FALSE(tracks.samples[0][f].valid) << "frame " << f << " was seen out of the picture";
+  for (int f = 52; f < 60; ++f) {
+    ASSERT_TRUE(tracks.samples[0][f].valid) << "frame " << f;
+    EXPECT_LT(error_mm(tracks.samples[0][f], truth[f]), 5.0) << "frame " << f;
+  }
+}
+
 // Started 5 cm from where the part is (an operator's rough placement): put right within 10
 // frames (here in the start frame already, segmented there), never followed confidently at the
 // wrong place.
