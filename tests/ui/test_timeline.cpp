@@ -1,6 +1,11 @@
 // Editing events through the timeline changes the demonstration; undo restores it; a broken rule
 // is shown with its reason and jumps to the event.
 #include <QComboBox>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
 #include <QLabel>
 #include <QPushButton>
 #include <QUndoStack>
@@ -134,6 +139,37 @@ private slots:
     const int labelled[] = {9, 48, 60, 97};
     for (int i = 0; i < 4; ++i) QVERIFY2(std::abs(d.events[i].frame - labelled[i]) <= 2, qPrintable(QString::number(d.events[i].frame)));
     QCOMPARE(doc_->undoStack()->count(), 1);
+  }
+
+  void aMarkerSceneWithoutMarkersChoosesThePartModels() {
+    // The sample's parts carry markers: followed by them.
+    QVERIFY(!doc_->detection()->modelTracker());
+    QCOMPARE(panel_->trackerChoice()->currentIndex(), 0);
+    // The same scene with the markers taken off: by the parts' models, and the choice shows.
+    QFile in(QString::fromStdString(doc_->media()->markersFile()));
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    QJsonObject scene = QJsonDocument::fromJson(in.readAll()).object();
+    QJsonArray objects = scene["objects"].toArray();
+    QVERIFY(!objects.isEmpty());
+    for (auto o : objects) {
+      QJsonObject object = o.toObject();
+      object["markers"] = QJsonArray();
+      o = object;
+    }
+    scene["objects"] = objects;
+    QTemporaryDir dir;
+    const QString bare = dir.filePath("bare_scene.json");
+    QFile out(bare);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(QJsonDocument(scene).toJson());
+    out.close();
+    const QString original = doc_->media()->markersPath();
+    doc_->media()->setMarkers(bare);
+    QVERIFY(doc_->detection()->modelTracker());
+    QCOMPARE(panel_->trackerChoice()->currentIndex(), 1);
+    doc_->media()->setMarkers(original);
+    QVERIFY(!doc_->detection()->modelTracker());
+    QCOMPARE(panel_->trackerChoice()->currentIndex(), 0);
   }
 
   void detectionCanBeCancelled() {

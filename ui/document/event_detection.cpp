@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/demo/settle_demonstration.h"
+#include "perception/markers/marker_scene.h"
 #include "perception/tracking/tracker_init.h"
 #include "ui/document/document.h"
 
@@ -10,6 +11,26 @@ namespace demoplan::ui {
 
 EventDetection::EventDetection(Document* doc) : QObject(doc), doc_(doc), runner_(this) {
   connect(&runner_, &ExtractionRunner::finished, this, &EventDetection::onFinished);
+  connect(doc_->media(), &Media::markersChanged, this, &EventDetection::chooseTracker);
+}
+
+void EventDetection::setModelTracker(bool model) {
+  if (model == model_tracker_) return;
+  model_tracker_ = model;
+  emit trackerChanged(model);
+}
+
+void EventDetection::chooseTracker() {
+  const std::string& file = doc_->media()->markersFile();
+  if (file.empty()) return;
+  try {
+    const perception::MarkerScene scene = perception::load_marker_scene(file);
+    bool markers = false;
+    for (const auto& o : scene.objects) markers = markers || !o.markers.empty();
+    setModelTracker(!markers);
+  } catch (const std::exception&) {
+    // An unreadable scene is reported where it is opened; the choice stays as it was.
+  }
 }
 
 QString EventDetection::blocker() const {

@@ -22,18 +22,21 @@ public:
   QString blocker() const;
   bool start();
 
-  // Markers on the parts (default), or the parts' models: then every part starts from init.json
-  // beside the marker scene when there is one, else from where the project shows it at frame 0
-  // (the operator places it there).
-  void setModelTracker(bool model) { model_tracker_ = model; }
+  // Markers on the parts, or the parts' models: then every part starts from init.json beside
+  // the marker scene when there is one, else from where the project shows it at frame 0 (the
+  // operator places it there). Chosen anew whenever a marker scene is opened: the models when
+  // no part in it carries a marker, else the markers.
+  void setModelTracker(bool model);
   bool modelTracker() const { return model_tracker_; }
 
 signals:
+  void trackerChanged(bool model);
   // After the demonstration was replaced (ok) or nothing was (not ok: the error says why).
   void done(const ExtractionOutcome& outcome);
 
 private:
   void onFinished(const ExtractionOutcome& outcome);
+  void chooseTracker();  // for the marker scene just opened
 
   Document* doc_;
   ExtractionRunner runner_;

@@ -382,8 +382,11 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
   tracker_->setToolTip(tr("How the parts are followed through the video: by the markers stuck on them, or by their "
                           "3D models from where they stand in the first frame (init.json beside the marker scene, "
                           "else the parts' poses at frame 0 in this project)"));
+  tracker_->setCurrentIndex(doc_->detection()->modelTracker() ? 1 : 0);
   connect(tracker_, &QComboBox::currentIndexChanged, this,
           [this](int index) { doc_->detection()->setModelTracker(index == 1); });
+  connect(doc_->detection(), &EventDetection::trackerChanged, this,
+          [this](bool model) { tracker_->setCurrentIndex(model ? 1 : 0); });
   cancel_ = new QPushButton(tr("Cancel"), this);
   progress_ = new QProgressBar(this);
   progress_->setMaximumWidth(220);
