@@ -68,6 +68,22 @@ TEST_F(CliPlanning, AMarkerFreeDemonstrationIsPlannedValid) {
   const std::string d = (dir_ / "no_markers").string();
   const CliResult s = run({"synth", "--task", "shelf_1", "--no-markers", "--out", d, "--json"});
   ASSERT_EQ(s.code, 0) << s.err;
+  // Bad starts first: a missing start file, and one that puts a part beside the picture.
+  const CliResult missing = run({"extract", d + "/video.mp4", "--scene", d + "/scene.json", "--tracker", "model",
+                                 "--init", d + "/nothing.json", "--out", d + "/bad.json"});
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("nothing.json"), std::string::npos) << missing.err;
+  Json init = Json::parse(std::ifstream(d + "/init.json"));
+  init["parts"][1]["world_T_object"]["t"][1] = 25.0;  // 25 m to the side
+  std::ofstream(d + "/aside.json") << init.dump();
+  const CliResult aside = run({"extract", d + "/video.mp4", "--scene", d + "/scene.json", "--tracker", "model",
+                               "--init", d + "/aside.json", "--out", d + "/bad.json"});
+  EXPECT_EQ(aside.code, 2);
+  EXPECT_NE(aside.err.find("aside.json"), std::string::npos) << aside.err;
+  EXPECT_NE(aside.err.find("parts[1].world_T_object"), std::string::npos) << aside.err;
+  EXPECT_NE(aside.err.find(init["parts"][1]["id"].get<std::string>()), std::string::npos) << aside.err;
+  EXPECT_FALSE(fs::exists(d + "/bad.json"));
+
   const CliResult x = run({"extract", d + "/video.mp4", "--scene", d + "/scene.json", "--tracker", "model", "--out",
                            d + "/demo.json", "--json"});
   ASSERT_EQ(x.code, 0) << x.err;
