@@ -3,8 +3,9 @@
 // extracted and compared with their ground truth (also from simulated BOP estimates and hand
 // detections instead of markers); then the event detector runs on the real
 // per-frame pose estimates of the tasks (objects_poses) against their contact labels.
-// Prints Markdown tables. Usage: bench_extraction [--quick] [--segments] [--tracker model] [--keep DIR]
-// (--tracker model: the videos without markers on the parts, the model-based tracker from init.json)
+// Prints Markdown tables. Usage: bench_extraction [--quick] [--segments] [--tracker model|ols|gos] [--keep DIR]
+// (--tracker model: the videos without markers on the parts, the model-based tracker from init.json;
+// ols, gos: the same videos and starts, OpenCV contrib's rapid trackers instead, for comparison)
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/rapid_pose_tracker.h"
 #include "core/demo/benchmark_demonstration.h"
 #include "core/demo/benchmark_task.h"
 #include "perception/camera/camera_model.h"
@@ -23,6 +25,7 @@
 #include "perception/events/model_points.h"
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/markers/marker_scene.h"
+#include "perception/render/part_meshes.h"
 #include "perception/synthetic/synthetic_video.h"
 #include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/marker_pose_tracker.h"
@@ -79,14 +82,16 @@ void row(const std::string& label, const Pool& p, bool with_fps) {
 
 int main(int argc, char** argv) {
   bool quick = false, segments = false;  // --segments: segment_tracks reads the tracks
-  bool model = false;                     // --tracker model
+  bool model = false;                     // --tracker model|ols|gos: videos without markers
+  std::string tracker_name = "markers";
   std::string keep;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
     if (!std::strcmp(argv[i], "--segments")) segments = true;
     if (!std::strcmp(argv[i], "--keep") && i + 1 < argc) keep = argv[++i];
-    if (!std::strcmp(argv[i], "--tracker") && i + 1 < argc) model = !std::strcmp(argv[++i], "model");
+    if (!std::strcmp(argv[i], "--tracker") && i + 1 < argc) tracker_name = argv[++i];
   }
+  model = tracker_name != "markers";
   const std::string data = DEMOPLAN_DATA_DIR;
   const fs::path root = keep.empty() ? fs::temp_directory_path() / ("demoplan_bench_extraction_" + std::to_string(::getpid()))
                                      : fs::path(keep);
@@ -107,7 +112,8 @@ int main(int argc, char** argv) {
                                      {"no markers: simulated BOP poses + hands", 0, 0, false, true, true}};
 
   std::printf("## Synthetic videos (1280x720, 30 fps, %s; tolerance 2 frames)\n\n",
-              model ? "no markers, model-based tracker" : "markers");
+              !model ? "markers" : tracker_name == "model" ? "no markers, model-based tracker"
+                                 : ("no markers, cv::rapid " + tracker_name + " tracker").c_str());
   std::printf("| task, condition | true events | detected | matched | precision | recall | median timing error (frames) "
               "| median translation error (mm) | median rotation error (deg) | median MSSD (mm) | max translation error (mm) "
               "| extraction fps |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -134,7 +140,14 @@ int main(int argc, char** argv) {
         eo.bop_csv = s.bop_csv;
       }
       std::unique_ptr<PoseTracker> tracker;
-      if (model)
+      if (tracker_name == "ols" || tracker_name == "gos") {
+        std::vector<RenderMesh> meshes = marker_scene_part_meshes(scene, s.scene, data);
+        std::vector<std::pair<std::string, RenderMesh>> parts;
+        for (size_t k = 0; k < scene.objects.size(); ++k) parts.emplace_back(scene.objects[k].id, std::move(meshes[k]));
+        tracker = std::make_unique<bench::RapidPoseTracker>(
+            tracker_name == "ols" ? bench::RapidPoseTracker::Kind::Ols : bench::RapidPoseTracker::Kind::Gos, parts,
+            load_tracker_init(s.init));
+      } else if (model)
         tracker = make_model_tracker(scene, s.scene, data, load_tracker_init(s.init), s.init, model_options);
       else tracker = std::make_unique<MarkerPoseTracker>(scene);
       const ExtractionResult r = extract_demonstration(s.video, load_camera(s.camera), *tracker, scene.task, eo);
