@@ -45,6 +45,7 @@ struct Condition {
   bool occlusion;
   bool hands;  // fuse the simulated hand-contact detections
   bool bop_only = false;  // no markers: the simulated BOP pose estimates (and the hands) only
+  double lighting = 0.0;  // the light varies by this fraction over the video
 };
 
 double median(std::vector<double> v) {
@@ -103,7 +104,8 @@ int main(int argc, char** argv) {
   const std::vector<Condition> conditions =
       model ? std::vector<Condition>{{"clean", 0, 0, false, false},
                                      {"noise 6 + blur 3 px", 6, 3, false, false},
-                                     {"occluder while carried", 0, 0, true, false}}
+                                     {"occluder while carried", 0, 0, true, false},
+                                     {"light 70-130 %", 0, 0, false, false, false, 0.3}}
             : std::vector<Condition>{{"clean", 0, 0, false, false},
                                      {"clean + hands", 0, 0, false, true},
                                      {"noise 6 + blur 3 px", 6, 3, false, false},
@@ -126,6 +128,7 @@ int main(int argc, char** argv) {
       so.robot = t == "waiter_0" ? "kmr_iiwa" : "panda";
       so.noise_sigma = c.noise;
       so.blur_px = c.blur;
+      so.lighting = c.lighting;
       so.occlusion = c.occlusion;
       so.detections = c.hands;
       so.part_markers = !model;

@@ -100,6 +100,9 @@ Command register_synth_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber)->capture_default_str();
   sub->add_option("--blur", o->synth.blur_px, "linear motion blur length, pixels")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
+  sub->add_option("--lighting", o->synth.lighting,
+                  "the light's brightness varies by this fraction over the video (0.3: 70-130 %), its colour by half as much")
+      ->check(CLI::Range(0.0, 0.95))->capture_default_str();
   sub->add_flag("--occlusion", o->synth.occlusion, "a pole passes in front of every carried part");
   sub->add_option("--seed", o->synth.seed, "random seed (noise, blur direction, simulated detections, a cell's picks)")->capture_default_str();
   sub->add_option("--time-scale", o->synth.time_scale, "scale of every frame index (< 1: shorter video)")

@@ -6,7 +6,15 @@
 
 namespace demoplan::perception {
 
+cv::Vec3d lighting_at(int frame, int frames, double amplitude) {
+  const double t = frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
+  const double brightness = 1.0 + amplitude * std::sin(2 * M_PI * 1.5 * t);
+  const double warmth = 0.5 * amplitude * std::sin(2 * M_PI * 0.8 * t + 1.0);  // red up, blue down
+  return {brightness * (1.0 - warmth), brightness, brightness * (1.0 + warmth)};
+}
+
 void degrade(cv::Mat& bgr, const Degradation& d, cv::RNG& rng) {
+  if (d.light != cv::Vec3d(1.0, 1.0, 1.0)) cv::multiply(bgr, cv::Scalar(d.light[0], d.light[1], d.light[2]), bgr);
   if (d.blur_px >= 1.0) {
     const int n = static_cast<int>(std::ceil(d.blur_px)) | 1;  // odd kernel
     cv::Mat kernel = cv::Mat::zeros(n, n, CV_32F);

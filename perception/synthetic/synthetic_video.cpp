@@ -308,6 +308,7 @@ SynthOutput render_demonstration(const SynthOptions& o, const std::string& out_d
     }
     cv::Mat frame = r.color().clone();
     cv::RNG noise_rng(o.seed * 1000003u + static_cast<unsigned>(f));
+    degradation.light = lighting_at(f, script.frames, o.lighting);
     degrade(frame, degradation, noise_rng);
     writer.write(frame);
     if (o.progress) o.progress(f + 1, script.frames);
@@ -340,6 +341,7 @@ SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::stri
     throw InputError(task.file, "robot_poses", "task " + o.task + " has no pose " + std::to_string(o.robot_pose) +
                                                    " for robot '" + o.robot + "'");
   if (o.noise_sigma < 0 || o.blur_px < 0) throw InputError("synth options", "noise/blur", "must be >= 0");
+  if (o.lighting < 0 || o.lighting >= 1) throw InputError("synth options", "lighting", "must be in [0, 1)");
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   if (!fs::is_directory(out_dir)) throw InputError(out_dir, "", "cannot create the output folder");
@@ -372,6 +374,7 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
   const auto t0 = std::chrono::steady_clock::now();
   const SynthOptions& ro = o.render;
   if (ro.noise_sigma < 0 || ro.blur_px < 0) throw InputError("synth options", "noise/blur", "must be >= 0");
+  if (ro.lighting < 0 || ro.lighting >= 1) throw InputError("synth options", "lighting", "must be in [0, 1)");
   if (!(ro.time_scale > 0.05 && ro.time_scale <= 4.0)) throw InputError("synth options", "time_scale", "must be in (0.05, 4]");
   const Cell cell = load_cell(o.cell);
   MeshCache cache;

@@ -23,6 +23,7 @@ struct SynthOptions {
   int robot_pose = 0;
   double noise_sigma = 0.0;  // grey levels
   double blur_px = 0.0;      // motion blur length, pixels
+  double lighting = 0.0;     // the light's brightness varies by this fraction over the video (image_degradation.h)
   bool occlusion = false;    // a pole passes in front of every carried part
   unsigned seed = 1;
   double time_scale = 1.0;   // < 1: a shorter video

@@ -14,6 +14,7 @@
 #include "perception/render/part_meshes.h"
 #include "perception/render/rasterizer.h"
 #include "perception/tracking/contour_model_file.h"
+#include "perception/tracking/light_correction.h"
 #include "perception/tracking/surface_flow.h"
 
 namespace demoplan::perception {
@@ -32,6 +33,7 @@ struct ModelPoseTracker::State {
   std::vector<RenderMesh> silhouettes;  // untextured meshes for the occlusion map
   cv::Mat furniture_depth;              // the furniture at the occlusion map's scale; empty: none
   cv::Mat last_gray;                    // the last frame, for the surface points' flow
+  LightReference light;                 // the start frame's light
   PoseTracks tracks;
   bool started = false;  // the init frame has been seen
 };
@@ -150,6 +152,14 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
   if (input.empty()) return {};
   cv::Mat image = input;
   if (!s.undistort_x.empty()) cv::remap(input, image, s.undistort_x, s.undistort_y, cv::INTER_LINEAR);
+  // The colour models were learnt in the start frame's light (light_correction.h).
+  if (!s.started) s.light = light_reference(image);
+  const cv::Scalar gain = light_gain(s.light, image, options_.light_tolerance);
+  if (gain != cv::Scalar(1, 1, 1)) {
+    cv::Mat corrected;
+    cv::multiply(image, gain, corrected);
+    image = corrected;
+  }
   if (!s.started) {
     // The starting poses, and what the parts and their surroundings look like there.
     for (size_t k = 0; k < models_.size(); ++k)
