@@ -90,19 +90,18 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   }
   // A start that puts a part behind the camera or its centre beside the picture is a wrong
   // placement, not a part to look for.
-  for (size_t i = 0; i < init_.parts.size(); ++i) {
-    const PartStart& p = init_.parts[i];
-    const auto model = std::find_if(models_.begin(), models_.end(), [&](const ModelPart& m) { return m.id == p.id; });
-    if (model == models_.end()) continue;
-    const Eigen::Vector3d c = s.world_T_camera.inverse() * p.world_T_object * contours_[model - models_.begin()]->centre();
-    const std::string field = "parts[" + std::to_string(i) + "].world_T_object";
-    if (c.z() < 0.05) throw InputError(init_source_, field, "puts part '" + p.id + "' behind the camera");
-    const double u = s.intrinsics.fx * c.x() / c.z() + s.intrinsics.cx, v = s.intrinsics.fy * c.y() / c.z() + s.intrinsics.cy;
-    if (u < 0 || v < 0 || u >= s.image_size.width || v >= s.image_size.height)
+  for (size_t k = 0; k < models_.size(); ++k) {
+    const PartStart& p = *init_.find(models_[k].id);
+    const Pose camera_T_part = s.world_T_camera.inverse() * p.world_T_object;
+    const std::string field = "parts[" + std::to_string(&p - init_.parts.data()) + "].world_T_object";
+    if ((camera_T_part * contours_[k]->centre()).z() < 0.05)
+      throw InputError(init_source_, field, "puts part '" + p.id + "' behind the camera");
+    const Eigen::Vector2d at = centre_in_image(k, camera_T_part) + Eigen::Vector2d(s.intrinsics.cx, s.intrinsics.cy);
+    if (at.x() < 0 || at.y() < 0 || at.x() >= s.image_size.width || at.y() >= s.image_size.height)
       throw InputError(init_source_, field,
                        "puts part '" + p.id + "' outside the " + std::to_string(s.image_size.width) + "x" +
                            std::to_string(s.image_size.height) + " image (its centre at pixel " +
-                           std::to_string(static_cast<int>(u)) + ", " + std::to_string(static_cast<int>(v)) + ")");
+                           std::to_string(static_cast<int>(at.x())) + ", " + std::to_string(static_cast<int>(at.y())) + ")");
   }
   s.tracks.fps = start.fps;
   for (const auto& p : parts_) {
@@ -153,9 +152,9 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
   cv::Mat image = input;
   if (!s.undistort_x.empty()) cv::remap(input, image, s.undistort_x, s.undistort_y, cv::INTER_LINEAR);
   // The colour models were learnt in the start frame's light (light_correction.h).
-  if (!s.started) s.light = light_reference(image);
-  const cv::Scalar gain = light_gain(s.light, image, options_.light_tolerance);
-  if (gain != cv::Scalar(1, 1, 1)) {
+  if (!s.started) {
+    s.light = light_reference(image);
+  } else if (const cv::Scalar gain = light_gain(s.light, image, options_.light_tolerance); gain != cv::Scalar(1, 1, 1)) {
     cv::Mat corrected;
     cv::multiply(image, gain, corrected);
     image = corrected;
@@ -325,6 +324,7 @@ void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {
     learn_colors(image, s.intrinsics, *contours_[k], T, map, part, there, options_.region);
     return contour_contrast(image, s.intrinsics, *contours_[k], there, T);
   };
+  double current = contrast(s.camera_T_part[k]);
   for (const bool hold_depth : {true, false}) {
     Pose T = s.camera_T_part[k];
     for (int round = 0; round < options_.settle_rounds; ++round) {
@@ -335,7 +335,10 @@ void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {
       if (step.translation().norm() < 0.5e-3 && Eigen::AngleAxisd(step.linear()).angle() < 0.2 * M_PI / 180) break;
     }
     const double gain = hold_depth ? options_.settle_contrast_gain : options_.settle_depth_contrast_gain;
-    if (contrast(T) >= contrast(s.camera_T_part[k]) + gain) s.camera_T_part[k] = T;
+    if (const double there = contrast(T); there >= current + gain) {
+      s.camera_T_part[k] = T;
+      current = there;
+    }
   }
 }
 
