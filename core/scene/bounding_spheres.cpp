@@ -191,6 +191,22 @@ SphereSet fit_bounding_spheres(const std::vector<Eigen::Vector3d>& vertices,
     for (const auto& child : clusters_of(ps, part, max_parts)) set.children.push_back(enclose_pieces(ps, child));
   }
   set.children_begin.push_back(static_cast<int>(set.children.size()));
+
+  // Witnesses: the corner farthest from the centre, then each time the corner farthest from
+  // those chosen.
+  std::vector<double> gap(used.size(), std::numeric_limits<double>::infinity());
+  size_t next = 0;
+  max_distance(used, set.all.centre, &next);
+  while (set.witnesses.size() < static_cast<size_t>(SphereSet::kWitnesses)) {
+    const Vec w = used[next];
+    set.witnesses.push_back(w);
+    double far = 0.0;
+    for (size_t i = 0; i < used.size(); ++i) {
+      gap[i] = std::min(gap[i], (used[i] - w).squaredNorm());
+      if (gap[i] > far) far = gap[i], next = i;
+    }
+    if (far == 0.0) break;  // every corner chosen
+  }
   return set;
 }
 

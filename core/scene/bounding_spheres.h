@@ -26,6 +26,10 @@ struct SphereSet {
   std::vector<BoundingSphere> parts;   // their union holds every triangle; empty: no bound
   std::vector<BoundingSphere> children;  // part i's: [children_begin[i], children_begin[i + 1])
   std::vector<int> children_begin;       // parts.size() + 1 entries
+  // Triangle corners spread over the mesh (farthest-point order, at most kWitnesses): one that
+  // lies inside a solid primitive proves contact (geometry_bounds.h, certainly_touching).
+  std::vector<Eigen::Vector3d> witnesses;
+  static constexpr int kWitnesses = 32;
 };
 
 // Radius margin added to every fitted sphere: 1 micrometre plus 1e-9 of the sphere's distance

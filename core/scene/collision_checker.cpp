@@ -12,6 +12,7 @@
 #include "core/scene/bvh_cache.h"
 #include "core/scene/fcl_object.h"
 #include "core/scene/geometry_bounds.h"
+#include "core/scene/joint_pair_table.h"
 
 namespace demoplan {
 
@@ -118,6 +119,8 @@ struct CollisionChecker::Impl {
   std::vector<std::unique_ptr<CollisionObjectd>> furniture_objects;
   fcl::DynamicAABBTreeCollisionManagerd world;
   std::vector<std::pair<int, int>> self_pairs;  // robot geometry indices
+  // Per self pair: its distance table when one or two joints move it (null otherwise).
+  std::vector<std::unique_ptr<JointPairTable>> self_tables;
 
   // Collects results of one query; shared by the broad-phase callback and the pair loops.
   struct Query {
@@ -130,13 +133,24 @@ struct CollisionChecker::Impl {
     int hits = 0;
     const GeomInfo* query_info = nullptr;  // broad phase: the moving geometry asked about
     CollisionObjectd* query_object = nullptr;
+    const Eigen::VectorXd* q = nullptr;    // the robot's configuration
 
     bool done() const { return hit && !all; }
 
-    void narrow(CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {
-      if (impl->options.fast_path && impl->certainly_apart(*data, a, ia, b, ib)) return;
-      data->result.clear();
-      if (fcl::collide(&a, &b, data->request, data->result) == 0) return;
+    // `table`: a self pair's distance table, asked when the bounds cannot separate the pair
+    // (measuring a node costs more than FCL's query; only pairs that reach FCL fill it).
+    void narrow(CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib,
+                const JointPairTable* table = nullptr) {
+      bool touch = false;
+      if (impl->options.fast_path) {
+        const PlacedBound pa = impl->placed(*data, a, ia), pb = impl->placed(*data, b, ib);
+        if (certainly_separated(pa, pb) || (table && table->certainly_free(*q))) return;
+        touch = certainly_touching(pa, pb);
+      }
+      if (!touch) {
+        data->result.clear();
+        if (fcl::collide(&a, &b, data->request, data->result) == 0) return;
+      }
       CollisionPair p{ia.name, ib.name};
       if (!hit) first = p;
       hit = true;
@@ -156,12 +170,6 @@ struct CollisionChecker::Impl {
     }
     return {&g.bound, &o.getTransform(), c, d.children.data() + g.child_offset, d.child_placed.data() + g.part_offset,
             d.query};
-  }
-
-  // The fast path's pre-test: true only when FCL would find the pair free.
-  bool certainly_apart(Workspace& d, const CollisionObjectd& a, const GeomInfo& ia, const CollisionObjectd& b,
-                       const GeomInfo& ib) const {
-    return certainly_separated(placed(d, a, ia), placed(d, b, ib));
   }
 
   bool skip_furniture(const GeomInfo& moving, const GeomInfo& f, const AllowedContacts& allowed) const {
@@ -230,9 +238,10 @@ struct CollisionChecker::Impl {
   void visit_pairs(Workspace& d, const AllowedContacts& allowed, Visitor& v) const {
     for (size_t i = 0; i < robot.size() && !v.done(); ++i)
       if (!robot[i].world_fixed) v.robot_world(d.robot[i], robot[i]);
-    for (const auto& [i, j] : self_pairs) {
+    for (size_t k = 0; k < self_pairs.size(); ++k) {
       if (v.done()) return;
-      v.pair(d.robot[i], robot[i], d.robot[j], robot[j]);
+      const auto [i, j] = self_pairs[k];
+      v.self_pair(k, d.robot[i], robot[i], d.robot[j], robot[j]);
     }
     for (size_t o = 0; o < objects.size() && !v.done(); ++o) {
       const GeomInfo& oi = objects[o];
@@ -253,6 +262,9 @@ struct CollisionChecker::Impl {
     Workspace& d;
     bool done() const { return q.done(); }
     void robot_world(CollisionObjectd& obj, const GeomInfo& info) { impl.against_world(q, obj, info); }
+    void self_pair(size_t k, CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {
+      if (a.getAABB().overlap(b.getAABB())) q.narrow(a, ia, b, ib, impl.self_tables[k].get());
+    }
     void pair(CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {
       if (a.getAABB().overlap(b.getAABB())) q.narrow(a, ia, b, ib);
     }
@@ -306,6 +318,9 @@ CollisionChecker::CollisionChecker(const Scene& scene, CollisionOptions options)
       add(impl_->robot, std::move(info), g);
     }
   }
+  auto link_geometry = [](const GeomInfo& g) {
+    return LinkGeometry{g.link, g.local, g.prototype, &g.bound};
+  };
   auto adjacent = [&](int a, int b) {
     // Bodies joined by one moving joint: the parent joint of one body's top link hangs off the other.
     auto joined = [&](int child_body, int parent_body) {
@@ -323,6 +338,8 @@ CollisionChecker::CollisionChecker(const Scene& scene, CollisionOptions options)
       if (scene.robot.srdf.collision_disabled(rm.links[a.link].name, rm.links[b.link].name)) continue;
       if (options.skip_adjacent_links && adjacent(a.link, b.link)) continue;
       impl_->self_pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
+      impl_->self_tables.push_back(options.fast_path ? JointPairTable::make(rm, link_geometry(a), link_geometry(b))
+                                                     : nullptr);
     }
   }
 
@@ -433,6 +450,7 @@ bool CollisionChecker::in_collision(const SceneState& state, CollisionData& data
                                     const AllowedContacts& allowed, CollisionPair* hit) const {
   impl_->place(scene_, state, *data.w_);
   Impl::Query q{impl_.get(), data.w_.get(), &allowed, nullptr, {}};
+  q.q = &state.q;
   impl_->run(q);
   if (q.hit && hit) *hit = q.first;
   return q.hit;
@@ -443,6 +461,7 @@ std::vector<CollisionPair> CollisionChecker::collisions(const SceneState& state,
   impl_->place(scene_, state, *data.w_);
   std::vector<CollisionPair> all;
   Impl::Query q{impl_.get(), data.w_.get(), &allowed, &all, {}};
+  q.q = &state.q;
   impl_->run(q);
   return all;
 }
@@ -519,7 +538,7 @@ DistanceResult CollisionChecker::min_distance(const SceneState& state, Collision
     void robot_world(CollisionObjectd& obj, const GeomInfo& info) {
       if (only_object < 0) world(obj, info);
     }
-    void pair(CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {
+    void self_pair(size_t, CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {
       if (only_object < 0) q.measure(a, ia, b, ib);
     }
     void object_robot(size_t o, CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {

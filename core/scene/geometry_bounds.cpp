@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/geometry/box_overlap.h"
+
 namespace demoplan {
 
 namespace {
@@ -104,16 +106,55 @@ bool sphere_sets_apart(const PlacedBound& a, const PlacedBound& b) {
   return true;
 }
 
+// Two boxes by the separating axis test (core/geometry/box_overlap.h), one grown by the
+// margin: exact, so a base box beside a table's legs or under its top is told apart without
+// FCL, where the boxes' bounding spheres overlap.
+bool boxes_apart(const PlacedBound& a, const PlacedBound& b) {
+  const double margin = 1e-6 + 1e-9 * (a.pose->translation().norm() + b.pose->translation().norm());
+  return !boxes_overlap(*a.pose, a.bound->half + Vec::Constant(margin), *b.pose, b.bound->half);
+}
+
 bool is_primitive(const GeometryBound& b) {
   return b.kind == GeometryBound::Kind::Box || b.kind == GeometryBound::Kind::Cylinder ||
          b.kind == GeometryBound::Kind::Sphere;
+}
+
+// How deep a point (in the primitive's frame) lies inside the solid primitive; negative outside.
+double depth_inside(const GeometryBound& p, const Vec& x) {
+  switch (p.kind) {
+    case GeometryBound::Kind::Box:
+      return (p.half - x.cwiseAbs()).minCoeff();
+    case GeometryBound::Kind::Cylinder:
+      return std::min(p.half.x() - std::hypot(x.x(), x.y()), p.half.z() - std::abs(x.z()));
+    case GeometryBound::Kind::Sphere:
+      return p.half.x() - x.norm();
+    default:
+      return -1.0;
+  }
+}
+
+// Some witness of `w` inside the solid primitive `p`.
+bool witness_inside(const PlacedBound& w, const PlacedBound& p) {
+  if (!is_primitive(*p.bound) || !w.bound->spheres || w.bound->spheres->witnesses.empty()) return false;
+  const Eigen::Matrix3d Rt = p.pose->linear().transpose();
+  const Eigen::Matrix3d R = Rt * w.pose->linear();
+  const Vec t = Rt * (w.pose->translation() - p.pose->translation());
+  const double margin = 1e-6 + 1e-9 * (w.pose->translation().norm() + p.pose->translation().norm());
+  for (const Vec& v : w.bound->spheres->witnesses)
+    if (depth_inside(*p.bound, R * v + t) > margin) return true;
+  return false;
 }
 
 }  // namespace
 
 GeometryBound box_bound(const Eigen::Vector3d& size) {
   const Vec half = 0.5 * size;
-  return primitive(GeometryBound::Kind::Box, half, half.norm());
+  GeometryBound b = primitive(GeometryBound::Kind::Box, half, half.norm());
+  auto set = std::make_shared<SphereSet>(*b.spheres);
+  for (int i = 0; i < 8; ++i)
+    set->witnesses.emplace_back(i & 1 ? half.x() : -half.x(), i & 2 ? half.y() : -half.y(), i & 4 ? half.z() : -half.z());
+  b.spheres = std::move(set);
+  return b;
 }
 
 GeometryBound cylinder_bound(double radius, double length) {
@@ -145,9 +186,17 @@ void place_children(const GeometryBound& bound, const Pose& pose, Eigen::Vector3
 
 bool certainly_separated(const PlacedBound& a, const PlacedBound& b) {
   if (a.bound->kind == GeometryBound::Kind::None || b.bound->kind == GeometryBound::Kind::None) return false;
+  if (a.bound->kind == GeometryBound::Kind::Box && b.bound->kind == GeometryBound::Kind::Box)
+    return spheres_apart(a.centres[0], a.bound->spheres->all.radius, b.centres[0], b.bound->spheres->all.radius) ||
+           boxes_apart(a, b);
   if (is_primitive(*b.bound)) return spheres_apart_from_primitive(a, b);
   if (is_primitive(*a.bound)) return spheres_apart_from_primitive(b, a);
   return sphere_sets_apart(a, b);
+}
+
+bool certainly_touching(const PlacedBound& a, const PlacedBound& b) {
+  if (a.bound->kind == GeometryBound::Kind::None || b.bound->kind == GeometryBound::Kind::None) return false;
+  return witness_inside(a, b) || witness_inside(b, a);
 }
 
 }  // namespace demoplan

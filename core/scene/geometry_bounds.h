@@ -53,4 +53,10 @@ void place_children(const GeometryBound& bound, const Pose& pose, Eigen::Vector3
 // True only if the two placed bodies certainly do not touch.
 bool certainly_separated(const PlacedBound& a, const PlacedBound& b);
 
+// True only if they certainly touch as FCL sees them: a witness of one (a mesh's triangle
+// corner, a box's corner) lies inside the other, a solid box, cylinder or sphere, by more than
+// the margin. FCL tests a mesh's triangles and a box's solid against the solid primitive, so it
+// finds that contact too. (Two meshes are never proven touching: FCL sees only surfaces.)
+bool certainly_touching(const PlacedBound& a, const PlacedBound& b);
+
 }  // namespace demoplan

@@ -117,3 +117,68 @@ TEST(GeometryBounds, SeparatedOnlyWhenApart) {
   EXPECT_TRUE(at({0.54, 0.14, 0.0}));      // off the corner edge: 5.66 cm > 5 cm
   EXPECT_FALSE(at({0.53, 0.13, 0.0}));     // 4.24 cm from the edge
 }
+
+TEST(GeometryBounds, BoxesSeparatedOnlyWhenApart) {
+  const GeometryBound cube = box_bound(Eigen::Vector3d::Ones());
+  std::vector<Eigen::Vector3d> ca(cube.centre_count()), cb(cube.centre_count());
+  auto apart = [&](const Pose& pa, const Pose& pb) {
+    place_centres(cube, pa, ca.data());
+    place_centres(cube, pb, cb.data());
+    const PlacedBound a{&cube, &pa, ca.data(), nullptr}, b{&cube, &pb, cb.data(), nullptr};
+    return certainly_separated(a, b);
+  };
+  auto pose = [](const Eigen::Vector3d& x, const Eigen::AngleAxisd& r) {
+    Pose p = Pose::Identity();
+    p.linear() = r.toRotationMatrix();
+    p.translation() = x;
+    return p;
+  };
+  const Eigen::AngleAxisd none(0.0, Eigen::Vector3d::UnitZ());
+  const Pose origin = Pose::Identity();
+  // Face to face: 0.1 mm apart, and touching.
+  EXPECT_TRUE(apart(origin, pose({1.0001, 0.2, 0.3}, none)));
+  EXPECT_FALSE(apart(origin, pose({0.9999, 0.2, 0.3}, none)));
+  // A corner towards a face (45 degrees about z): the corner reaches 0.5 sqrt(2) from its centre.
+  const Eigen::AngleAxisd yaw(M_PI / 4, Eigen::Vector3d::UnitZ());
+  EXPECT_TRUE(apart(origin, pose({0.5 + 0.5 * std::sqrt(2.0) + 1e-4, 0, 0}, yaw)));
+  EXPECT_FALSE(apart(origin, pose({0.5 + 0.5 * std::sqrt(2.0) - 1e-4, 0, 0}, yaw)));
+  // Edge across edge: only the cross product of the two edges separates them (the spheres and
+  // the face normals do not).
+  const Pose a = pose({0, 0, 0}, Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitY()));
+  const double reach = std::sqrt(2.0);  // top edge of a plus bottom edge of b
+  EXPECT_TRUE(apart(a, pose({0, 0, reach + 1e-4}, Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitX()))));
+  EXPECT_FALSE(apart(a, pose({0, 0, reach - 1e-4}, Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitX()))));
+}
+
+TEST(GeometryBounds, TouchingOnlyWhenACornerIsInside) {
+  const GeometryBound cube = box_bound(Eigen::Vector3d::Ones());
+  // A mesh: one triangle 0.4 m wide, in its own frame around the origin.
+  const std::vector<Eigen::Vector3d> vertices{{-0.2, 0, 0}, {0.2, 0, 0}, {0, 0.2, 0}};
+  const GeometryBound tri = mesh_bound(std::make_shared<SphereSet>(fit_bounding_spheres(vertices, {{0, 1, 2}})));
+  ASSERT_EQ(tri.spheres->witnesses.size(), 3u);
+  auto at = [](double x, double y, double z) {
+    Pose p = Pose::Identity();
+    p.translation() = Eigen::Vector3d(x, y, z);
+    return p;
+  };
+  auto touching = [&](const GeometryBound& ga, const Pose& pa, const GeometryBound& gb, const Pose& pb) {
+    std::vector<Eigen::Vector3d> ca(ga.centre_count()), cb(gb.centre_count());
+    place_centres(ga, pa, ca.data());
+    place_centres(gb, pb, cb.data());
+    return certainly_touching({&ga, &pa, ca.data(), nullptr}, {&gb, &pb, cb.data(), nullptr});
+  };
+  const Pose origin = Pose::Identity();
+  // Box corners: one 0.1 mm inside the other box, then 0.1 mm outside.
+  EXPECT_TRUE(touching(cube, origin, cube, at(0.9999, 0.9999, 0.9999)));
+  EXPECT_FALSE(touching(cube, origin, cube, at(1.0001, 0.9999, 0.9999)));
+  // The triangle's corner (-0.2, 0, 0) just inside the cube's face x = 0.5, and just outside;
+  // across the face with every corner outside: FCL would find contact, this test cannot say.
+  EXPECT_TRUE(touching(tri, at(0.6999, 0, 0), cube, origin));
+  EXPECT_TRUE(touching(cube, origin, tri, at(0.6999, 0, 0)));
+  EXPECT_FALSE(touching(tri, at(0.7001, 0, 0), cube, origin));
+  const Pose across = at(0, 0, 0.5) * Pose(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
+  const GeometryBound big = mesh_bound(std::make_shared<SphereSet>(
+      fit_bounding_spheres({{-1, -0.75, 0}, {1, -0.75, 0}, {0, 0.75, 0}}, {{0, 1, 2}})));
+  EXPECT_FALSE(touching(big, origin, cube, origin));  // through the cube's middle, corners outside
+  EXPECT_FALSE(touching(tri, at(0, 0, 0.45) * across, tri, origin));  // two meshes: never
+}
