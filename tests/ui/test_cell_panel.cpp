@@ -124,6 +124,37 @@ private slots:
     QCOMPARE(doc_->demonstration().object_ids.size(), size_t(1));
   }
 
+  void markersAreStuckOnFacesListedDeletedAndUndone() {
+    const std::string stl = path("block.stl");
+    demoplan::test::write_box_stl(stl, 40, 30, 20);  // millimetres
+    QVERIFY2(panel_->addPart(QString::fromStdString(stl), 0.001), qPrintable(panel_->lastError()));
+    QVERIFY(panel_->markerList()->isEnabled());
+    QCOMPARE(panel_->markerList()->count(), 0);
+    const int steps = doc_->undoStack()->count();
+    // Where a click on the +x face (x = 20 mm) and on the top (z = 10 mm) would land.
+    panel_->setMarkerSize(0.015);
+    QVERIFY2(panel_->stickMarker(0, {0.02, 0.0, 0.0}, {1, 0, 0}), qPrintable(panel_->lastError()));
+    QVERIFY2(panel_->stickMarker(0, {0.0, 0.0, 0.01}, {0, 0, 1}), qPrintable(panel_->lastError()));
+    QCOMPARE(doc_->undoStack()->count(), steps + 2);
+    QCOMPARE(panel_->markerList()->count(), 2);
+    QVERIFY(panel_->markerList()->item(1)->text().contains(QStringLiteral("id 1, 15 mm")));
+    const Cell saved = load_cell(doc_->cell()->file);
+    QCOMPARE(saved.parts[0].markers.size(), size_t(2));
+    QCOMPARE(saved.parts[0].markers[0].id, 0);
+    QVERIFY(saved.parts[0].markers[0].pose.translation().isApprox(Eigen::Vector3d(0.021, 0, 0)));
+    QVERIFY(saved.parts[0].markers[1].pose.linear().col(2).isApprox(Eigen::Vector3d::UnitZ()));
+    // Over the edge of the 30 x 20 mm face: refused with the reason, nothing changed.
+    QVERIFY(!panel_->stickMarker(0, {0.02, 0.0, 0.006}, {1, 0, 0}));
+    QVERIFY2(panel_->lastError().contains(QStringLiteral("does not lie flat")), qPrintable(panel_->lastError()));
+    QCOMPARE(doc_->undoStack()->count(), steps + 2);
+    // Deleted, then back with undo; the file follows.
+    QVERIFY(panel_->deleteMarker(0, 0));
+    QCOMPARE(panel_->markerList()->count(), 1);
+    QCOMPARE(load_cell(doc_->cell()->file).parts[0].markers.size(), size_t(1));
+    doc_->undoStack()->undo();
+    QCOMPARE(load_cell(doc_->cell()->file).parts[0].markers.size(), size_t(2));
+  }
+
   void aPartWithEventsOrTooWideIsRefusedWithTheReason() {
     const std::string wide = path("wide.stl");
     demoplan::test::write_box_stl(wide, 300, 300, 300);

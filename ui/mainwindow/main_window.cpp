@@ -168,6 +168,18 @@ void MainWindow::createDocks() {
   tracks_dock_ = addDock(tr("Part Tracks"), QStringLiteral("PartTracksDock"), part_tracks_, Qt::BottomDockWidgetArea);
   cell_panel_ = new CellPanel(doc_, this);
   cell_dock_ = addDock(tr("Cell"), QStringLiteral("CellDock"), cell_panel_, Qt::LeftDockWidgetArea);
+  // Stick Markers: a click on a part's face in the 3D view sticks a marker there.
+  connect(scene_view_, &SceneView::surfacePicked, this, [this](const SceneView::SurfaceHit& hit) {
+    const Cell* cell = doc_->cell();
+    if (!cell || !cell_panel_->stickingMarkers()) return;
+    const std::string& name = doc_->scene().objects.at(static_cast<size_t>(hit.object)).id;
+    for (size_t p = 0; p < cell->parts.size(); ++p)
+      if (cell->parts[p].name == name) {
+        cell_dock_->raise();
+        cell_panel_->stickMarker(static_cast<int>(p), hit.point, hit.normal);
+        return;
+      }
+  });
   history_ = new QUndoView(doc_->undoStack(), this);
   history_->setEmptyLabel(tr("<opened>"));
   history_dock_ = addDock(tr("History"), QStringLiteral("HistoryDock"), history_, Qt::BottomDockWidgetArea);

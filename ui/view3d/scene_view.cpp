@@ -10,6 +10,7 @@
 #include <QTimer>
 #include <QToolButton>
 #include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -278,7 +279,11 @@ int SceneView::meshFor(const Geometry& g, QMatrix4x4& local, QVector4D& color) {
   CpuMesh m;
   const size_t n = tm.vertices.size();
   std::vector<Eigen::Vector3f> normals = tm.normals;
-  if (normals.size() != n) {  // smooth normals from the faces
+  // Many STL exporters write zero normals: such a part would be drawn black.
+  const bool file_normals = normals.size() == n && std::all_of(normals.begin(), normals.end(), [](const auto& v) {
+                              return v.allFinite() && v.squaredNorm() > 0.25f;
+                            });
+  if (!file_normals) {  // smooth normals from the faces
     normals.assign(n, Eigen::Vector3f::Zero());
     for (const auto& t : tm.triangles) {
       const Eigen::Vector3f fn = (tm.vertices[t[1]] - tm.vertices[t[0]]).cross(tm.vertices[t[2]] - tm.vertices[t[0]]);
@@ -635,6 +640,27 @@ void SceneView::paintGL() {
         for (const auto& [p, q] : {std::pair{a, pa}, std::pair{b, pb}, std::pair{pa, pb}, std::pair{palm, Eigen::Vector3d(palm - wrist * x)}})
           pushLine(selection_.data, toQt(p), toQt(q), kHandleColor, 0.9f);
       }
+    // A cell part's markers: the black square and, inside it, a tick from the centre to the
+    // image's top edge (how the printed marker goes on).
+    if (const Cell* cell = doc_->cell(); cell && selected < int(state.objects.size()))
+      for (const CellPart& p : cell->parts) {
+        if (p.name != scene_->objects[selected].id) continue;
+        for (const CellMarker& m : p.markers) {
+          const Pose w = state.objects[selected] * m.pose;
+          const double h = 0.5 * m.size;
+          auto at = [&](double x, double y) { return toQt(w * Eigen::Vector3d(x, y, 0.0)); };
+          const QVector3D c[4] = {at(-h, h), at(h, h), at(h, -h), at(-h, -h)};
+          // The printed white margin around it (one bit wide, ~1/6 of the side), so it shows on
+          // dark parts too.
+          const double m2 = 1.33 * h;
+          const QVector3D w4[4] = {at(-m2, m2), at(m2, m2), at(m2, -m2), at(-m2, -m2)};
+          for (int k = 0; k < 4; ++k) {
+            pushLine(selection_.data, c[k], c[(k + 1) % 4], kMarkerColor, 1.0f);
+            pushLine(selection_.data, w4[k], w4[(k + 1) % 4], Qt::white, 1.0f);
+          }
+          pushLine(selection_.data, at(0, 0), at(0, h), kMarkerColor, 1.0f);
+        }
+      }
   }
   selection_.dirty = true;
   drawLines(selection_, GL_LINES, 1, false, true);
@@ -755,12 +781,16 @@ void SceneView::fitToScene() {
   update();
 }
 
-int SceneView::pickObject(const QPointF& pixel) const {
-  if (!scene_) return -1;
+int SceneView::pickObject(const QPointF& pixel) const { return pickSurface(pixel).object; }
+
+SceneView::SurfaceHit SceneView::pickSurface(const QPointF& pixel) const {
+  SurfaceHit hit;
+  if (!scene_) return hit;
   const Ray ray = camera_.rayAt(pixel, size());
   const std::vector<QMatrix4x4> transforms = itemTransforms();
-  int best = -1;
   float best_t = 1e30f;
+  int best_item = -1;
+  QVector3D best_a, best_b, best_c, best_o, best_d;  // in the item's mesh frame
   for (size_t i = 0; i < items_.size(); ++i) {
     const Item& it = items_[i];
     if (it.owner != Owner::Object) continue;
@@ -774,13 +804,27 @@ int SceneView::pickObject(const QPointF& pixel) const {
         return QVector3D(m.vertices[idx * 8], m.vertices[idx * 8 + 1], m.vertices[idx * 8 + 2]);
       };
       float t;
-      if (rayTriangle(o, d, v(m.indices[k]), v(m.indices[k + 1]), v(m.indices[k + 2]), t) && t < best_t) {
+      const QVector3D a = v(m.indices[k]), b = v(m.indices[k + 1]), c = v(m.indices[k + 2]);
+      if (rayTriangle(o, d, a, b, c, t) && t < best_t) {
         best_t = t;
-        best = it.index;
+        best_item = int(i);
+        best_a = a, best_b = b, best_c = c, best_o = o, best_d = d;
       }
     }
   }
-  return best;
+  if (best_item < 0) return hit;
+  // The hit and the triangle's normal, facing the ray's origin, into the world, then the part's frame.
+  const QMatrix4x4& M = transforms[size_t(best_item)];
+  const QVector3D wa = M.map(best_a);
+  QVector3D world_n = QVector3D::crossProduct(M.map(best_b) - wa, M.map(best_c) - wa).normalized();
+  if (QVector3D::dotProduct(world_n, ray.direction) > 0) world_n = -world_n;
+  const QVector3D world = M.map(best_o + best_t * best_d);
+  hit.object = items_[size_t(best_item)].index;
+  const SceneState state = doc_->displayState();
+  const Pose part = hit.object < int(state.objects.size()) ? state.objects[size_t(hit.object)] : Pose::Identity();
+  hit.point = part.inverse() * Eigen::Vector3d(world.x(), world.y(), world.z());
+  hit.normal = (part.linear().transpose() * Eigen::Vector3d(world_n.x(), world_n.y(), world_n.z())).normalized();
+  return hit;
 }
 
 bool SceneView::gizmoFrame(QVector3D& origin, float& length, Pose& pose, int& event, int& object) const {
@@ -945,9 +989,10 @@ void SceneView::mouseReleaseEvent(QMouseEvent* e) {
   drag_ = Drag::None;
   drag_axis_ = -1;
   if (was == Drag::Orbit && !moved_ && e->button() == Qt::LeftButton) {
-    const int o = pickObject(e->position());
-    doc_->selectObject(o);
-    emit objectPicked(o);
+    const SurfaceHit hit = pickSurface(e->position());
+    doc_->selectObject(hit.object);
+    emit objectPicked(hit.object);
+    if (hit.object >= 0) emit surfacePicked(hit);
   }
   update();
 }

@@ -31,6 +31,14 @@ public:
   void fitToScene();
   // The part under a pixel (widget coordinates), -1 for none.
   int pickObject(const QPointF& pixel) const;
+  // Where the ray through a pixel first meets a part: the point and the face's normal (towards
+  // the camera) in the part's frame, metres. object -1 for none.
+  struct SurfaceHit {
+    int object = -1;
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  };
+  SurfaceHit pickSurface(const QPointF& pixel) const;
   // Gizmo handle under a pixel: 0..2 the x/y/z arrows, 3 the ring, -1 none.
   int gizmoHandleAt(const QPointF& pixel) const;
   // Screen position of the selected part's gizmo centre; false when no gizmo is shown.
@@ -52,6 +60,8 @@ public:
 
 signals:
   void objectPicked(int object);
+  // A click on a part (also reported by objectPicked): where it met its surface.
+  void surfacePicked(const demoplan::ui::SceneView::SurfaceHit& hit);
 
 protected:
   void initializeGL() override;

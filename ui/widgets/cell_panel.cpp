@@ -1,5 +1,6 @@
 #include "ui/widgets/cell_panel.h"
 
+#include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -17,6 +18,7 @@
 #include <filesystem>
 
 #include "core/cell/cell_edits.h"
+#include "core/cell/part_markers.h"
 #include "core/error.h"
 #include "ui/widgets/pose_fields.h"
 
@@ -124,6 +126,32 @@ CellPanel::CellPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc
   handle_buttons->addStretch(1);
   layout->addLayout(handle_buttons);
 
+  markers_ = new QListWidget(this);
+  markers_->setToolTip(tr("The ArUco markers stuck on the part (drawn on it in the 3D view; print them with "
+                          "demoplan-cli markers --cell)"));
+  markers_->setMinimumHeight(40);
+  layout->addWidget(markers_, 1);
+  auto* marker_buttons = new QHBoxLayout;
+  stick_marker_ = new QPushButton(tr("Stick Markers"), this);
+  stick_marker_->setCheckable(true);
+  stick_marker_->setToolTip(tr("While on, a click on a flat face of a part in the 3D view sticks a marker there, "
+                               "its top edge towards the part's +z"));
+  marker_size_ = new QDoubleSpinBox(this);
+  marker_size_->setRange(5.0, 200.0);
+  marker_size_->setDecimals(0);
+  marker_size_->setSuffix(tr(" mm"));
+  marker_size_->setValue(30.0);
+  marker_size_->setToolTip(tr("Side of the marker's black square"));
+  delete_marker_ = new QPushButton(tr("Delete Marker"), this);
+  connect(delete_marker_, &QPushButton::clicked, this, [this] {
+    if (selection_.kind == Kind::Part && markers_->currentRow() >= 0) deleteMarker(selection_.index, markers_->currentRow());
+  });
+  marker_buttons->addWidget(stick_marker_);
+  marker_buttons->addWidget(marker_size_);
+  marker_buttons->addWidget(delete_marker_);
+  marker_buttons->addStretch(1);
+  layout->addLayout(marker_buttons);
+
   message_ = new QLabel(this);
   message_->setWordWrap(true);
   message_->setObjectName(QStringLiteral("cellMessage"));
@@ -213,10 +241,14 @@ void CellPanel::showSelection() {
   pose_->setEditable(s.kind != Kind::None);
   remove_->setEnabled(s.kind == Kind::Furniture || s.kind == Kind::Part);
   handles_->clear();
+  markers_->clear();
   const bool part = s.kind == Kind::Part;
   handles_->setEnabled(part);
   delete_handle_->setEnabled(part);
   regenerate_->setEnabled(part);
+  markers_->setEnabled(part);
+  delete_marker_->setEnabled(part);
+  stick_marker_->setEnabled(cell && !cell->parts.empty());
   if (s.kind == Kind::None) {
     info_->setText(cell ? tr("Select the robot, a piece of furniture or a part to place it.") : QString());
     refreshing_ = false;
@@ -248,6 +280,16 @@ void CellPanel::showSelection() {
     if (o >= 0) {
       const SceneObject& so = doc_->scene().objects[static_cast<size_t>(o)];
       for (const auto& h : so.srdf.handles) handles_->addItem(q(h.name));
+      for (const CellMarker& m : p.markers) {
+        // Rounded to whole millimetres, without a "-0".
+        const Eigen::Vector3d c = (m.pose.translation() * 1000.0).array().round() + 0.0;
+        markers_->addItem(tr("id %1, %2 mm, at (%3, %4, %5) mm")
+                              .arg(m.id)
+                              .arg(m.size * 1000.0, 0, 'f', 0)
+                              .arg(c.x(), 0, 'f', 0)
+                              .arg(c.y(), 0, 'f', 0)
+                              .arg(c.z(), 0, 'f', 0));
+      }
       int placements = 0;
       for (const auto& c : so.srdf.contacts) placements += static_cast<int>(c.polygons.size());
       info_->setText(tr("Mesh %1 (scale %2); %3 handle(s) %4; %5 resting placement(s)")
@@ -383,6 +425,39 @@ bool CellPanel::regenerateHandles(int part) {
   p.auto_handles = true;
   p.handles.clear();
   return edit(after, tr("Generate the handles of %1").arg(q(p.name)));
+}
+
+bool CellPanel::stickingMarkers() const { return stick_marker_->isChecked() && stick_marker_->isEnabled(); }
+
+void CellPanel::setStickingMarkers(bool on) { stick_marker_->setChecked(on); }
+
+void CellPanel::setMarkerSize(double metres) { marker_size_->setValue(metres * 1000.0); }
+
+bool CellPanel::stickMarker(int part, const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
+  if (!doc_->cell() || part < 0 || part >= static_cast<int>(doc_->cell()->parts.size())) return false;
+  Cell after = *doc_->cell();
+  CellPart& p = after.parts[static_cast<size_t>(part)];
+  try {
+    const CellMarker m = marker_on_face(after, part, *load_mesh(p.mesh), point, normal, marker_size_->value() / 1000.0);
+    p.markers.push_back(m);
+    if (!edit(after, tr("Stick marker %1 on %2").arg(m.id).arg(q(p.name)))) return false;
+  } catch (const InputError& e) {
+    showError(q(e.what()));
+    return false;
+  }
+  select(Kind::Part, part);
+  markers_->setCurrentRow(markers_->count() - 1);
+  return true;
+}
+
+bool CellPanel::deleteMarker(int part, int marker) {
+  if (!doc_->cell() || part < 0 || part >= static_cast<int>(doc_->cell()->parts.size())) return false;
+  Cell after = *doc_->cell();
+  CellPart& p = after.parts[static_cast<size_t>(part)];
+  if (marker < 0 || marker >= static_cast<int>(p.markers.size())) return false;
+  const int id = p.markers[static_cast<size_t>(marker)].id;
+  p.markers.erase(p.markers.begin() + marker);
+  return edit(after, tr("Delete marker %1 of %2").arg(id).arg(q(p.name)));
 }
 
 void CellPanel::saveCellAs() {

@@ -2,12 +2,14 @@
 // The cell editor: the robot, the furniture and the parts of a project on a cell file, each
 // placed by typing millimetres and degrees; parts added from mesh files (put down on a free spot
 // of a support), furniture as a box, a cylinder or a mesh file; a part's handles listed, one
-// deleted or all generated again. Every change is one undo step and is written to the cell file
+// deleted or all generated again; ArUco markers stuck on a part by clicking its face in the 3D
+// view (Stick Markers), listed, deleted. Every change is one undo step and is written to the cell file
 // at once (Document::editCell); a bundled example is first saved under the user's own name.
 #include <QWidget>
 
 #include "ui/document/document.h"
 
+class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
 class QPushButton;
@@ -38,12 +40,21 @@ public:
   bool removeSelected();
   bool deleteHandle(int part, int handle);
   bool regenerateHandles(int part);
+  // A marker stuck on `part` (cell index) at `point` on the face with outward `normal` (part
+  // frame, metres; the 3D view's click), of the size in the panel, with the next free id.
+  bool stickMarker(int part, const Eigen::Vector3d& point, const Eigen::Vector3d& normal);
+  bool deleteMarker(int part, int marker);
+  // "Stick Markers" is on: a click on a part in the 3D view sticks one there.
+  bool stickingMarkers() const;
+  void setStickingMarkers(bool on);
+  void setMarkerSize(double metres);
   bool setSelectedPose(const Pose& pose, int field = -1);
   QString lastError() const { return error_; }
 
   QTreeWidget* tree() const { return tree_; }
   PoseFields* poseFields() const { return pose_; }
   QListWidget* handleList() const { return handles_; }
+  QListWidget* markerList() const { return markers_; }
   QLabel* infoLabel() const { return info_; }
 
 private:
@@ -67,6 +78,10 @@ private:
   QListWidget* handles_;
   QPushButton* delete_handle_;
   QPushButton* regenerate_;
+  QListWidget* markers_;
+  QPushButton* stick_marker_;
+  QDoubleSpinBox* marker_size_;
+  QPushButton* delete_marker_;
   QPushButton* remove_;
   QLabel* message_;
   Selection selection_;

@@ -21,6 +21,8 @@ inline const QColor kSelectionColor{0xff, 0xc4, 0x00};
 // Support polygons (where parts may be put down) and grasp handles in the 3D view.
 inline const QColor kSupportColor{0x2e, 0x7d, 0x32};
 inline const QColor kHandleColor{0x00, 0x83, 0x8f};
+// ArUco markers stuck on a cell's parts (near black, as printed).
+inline const QColor kMarkerColor{0x21, 0x21, 0x21};
 // x, y, z: the world axes in the 3D view and the position curves of the part tracks.
 inline const QColor kAxisColors[3] = {QColor(0xe5, 0x39, 0x35), QColor(0x43, 0xa0, 0x47), QColor(0x1e, 0x88, 0xe5)};
 // A frame range the event detection could not decide (timeline and part tracks, hatched).
