@@ -2,6 +2,7 @@
 // foreign and newer files are refused with a message naming the file and the field.
 #include <QFile>
 #include <QTemporaryDir>
+#include <QSignalSpy>
 #include <QtTest>
 
 #include "core/error.h"
@@ -143,6 +144,40 @@ private slots:
     QVERIFY(doc.hasProject());
     QCOMPARE(doc.steps()->state(Step::Video).status, StepStatus::Error);
     QVERIFY(doc.steps()->state(Step::Video).message.contains(QStringLiteral("nowhere.mp4")));
+  }
+
+  void aCameraOrVideoChangeIsOneUndoStep() {
+    Document doc(test::dataDir().toStdString());
+    doc.open(test::sampleProject());
+    QVERIFY(doc.hasProject());
+    QVERIFY(!doc.isModified());
+    const std::string camera = doc.media()->cameraFile();
+    QVERIFY(doc.media()->camera());
+    // An unreadable calibration is still taken (its error shown), and undone back to the good one.
+    QTemporaryDir dir;
+    const QString bad = dir.filePath(QStringLiteral("bad_camera.json"));
+    writeAll(bad, "{\"fx\": 1}");
+    QSignalSpy changed(doc.media(), &Media::cameraChanged);
+    doc.setMediaFile(Media::File::Camera, bad);
+    QCOMPARE(doc.undoStack()->count(), 1);
+    QVERIFY(doc.undoStack()->undoText().contains(QStringLiteral("bad_camera.json")));
+    QVERIFY(!doc.media()->camera());
+    QVERIFY(!doc.media()->cameraError().isEmpty());
+    QVERIFY(doc.isModified());
+    doc.undoStack()->undo();
+    QCOMPARE(doc.media()->cameraFile(), camera);
+    QVERIFY(doc.media()->camera());
+    QVERIFY(!doc.isModified());  // back where it was opened
+    doc.undoStack()->redo();
+    QVERIFY(!doc.media()->camera());
+    QCOMPARE(changed.count(), 3);
+    // No video at all, and back.
+    const std::string video = doc.media()->videoFile();
+    doc.setMediaFile(Media::File::Video, QString());
+    QVERIFY(!doc.media()->video());
+    doc.undoStack()->undo();
+    QCOMPARE(doc.media()->videoFile(), video);
+    QVERIFY(doc.media()->video());
   }
 };
 

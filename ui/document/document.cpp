@@ -83,6 +83,20 @@ private:
   bool first_ = true;
 };
 
+// Another video, camera calibration or marker scene: the file before and after.
+class MediaCommand : public QUndoCommand {
+public:
+  MediaCommand(Media* media, Media::File which, std::string before, std::string after, const QString& text)
+      : QUndoCommand(text), media_(media), which_(which), before_(std::move(before)), after_(std::move(after)) {}
+  void redo() override { media_->use(which_, after_); }
+  void undo() override { media_->use(which_, before_); }
+
+private:
+  Media* media_;
+  Media::File which_;
+  std::string before_, after_;
+};
+
 constexpr int kMergePose = 1;
 constexpr int kMergeConfidence = 2;
 
@@ -301,6 +315,15 @@ CellSceneOptions Document::cellSceneOptions() const {
   o.mesh_cache = mesh_cache_.get();
   o.part_cache = part_cache_.get();
   return o;
+}
+
+void Document::setMediaFile(Media::File which, const QString& file) {
+  const std::string after = file.isEmpty() ? std::string() : QFileInfo(file).absoluteFilePath().toStdString();
+  const QString name = file.isEmpty() ? tr("none") : QFileInfo(file).fileName();
+  const QString text = which == Media::File::Video    ? tr("Use the video %1").arg(name)
+                       : which == Media::File::Camera ? tr("Use the camera calibration %1").arg(name)
+                                                      : tr("Use the marker scene %1").arg(name);
+  undo_.push(new MediaCommand(media_, which, media_->fileOf(which), after, text));
 }
 
 void Document::editCell(const Cell& after, const QString& text, int merge_key) {

@@ -81,6 +81,10 @@ public:
   // holds what the editor shows (undo writes it back). Throws InputError and changes nothing
   // when the scene cannot be built, a removed part has events, or the file cannot be written.
   void editCell(const Cell& after, const QString& text, int merge_key = -1);
+  // The operator chooses another video, camera calibration or marker scene (empty: none): one
+  // undo step, undone by going back to the file before. A file that cannot be read is still
+  // taken (its error shown on the Video step), so the operator can undo it.
+  void setMediaFile(Media::File which, const QString& file);
   // Writes the cell to `file` (relative paths follow) and refers the project to it.
   void saveCellAs(const QString& file);
   // How the document builds cell scenes: its data folder, visual meshes, and the caches shared

@@ -49,6 +49,27 @@ void Media::load(const std::string& video, const std::string& camera, const std:
   emit markersChanged();
 }
 
+void Media::use(File which, const std::string& file) {
+  switch (which) {
+    case File::Video:
+      openVideo(file);
+      emit videoChanged();
+      break;
+    case File::Camera:
+      openCamera(file);
+      emit cameraChanged();
+      break;
+    case File::Markers:
+      markers_file_ = file;
+      emit markersChanged();
+      break;
+  }
+}
+
+const std::string& Media::fileOf(File which) const {
+  return which == File::Video ? video_file_ : which == File::Camera ? camera_file_ : markers_file_;
+}
+
 void Media::setVideo(const QString& file) {
   openVideo(absolute(file));
   emit edited();

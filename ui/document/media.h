@@ -23,10 +23,16 @@ public:
   // A project's files (absolute paths; empty: none), as opened: emits the *Changed signals but
   // not edited().
   void load(const std::string& video, const std::string& camera, const std::string& markers);
-  // The operator's choice: also emits edited().
+  // The operator's choice: also emits edited(). (In the GUI they go through the undo stack:
+  // Document::setMediaFile.)
   void setVideo(const QString& file);
   void setCamera(const QString& file);
   void setMarkers(const QString& file);
+  enum class File { Video, Camera, Markers };
+  // Opens `file` (absolute; empty: none) as the video, camera or marker scene and emits its
+  // *Changed signal, not edited(): what the undo commands call.
+  void use(File which, const std::string& file);
+  const std::string& fileOf(File which) const;
 
   const std::string& videoFile() const { return video_file_; }
   const std::string& cameraFile() const { return camera_file_; }

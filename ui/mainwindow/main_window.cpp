@@ -262,7 +262,7 @@ void MainWindow::createActions() {
     if (!doc_->hasProject()) return;
     const QString f = QFileDialog::getOpenFileName(this, tr("Open marker scene"), QFileInfo(doc_->filePath()).absolutePath(),
                                                    tr("Marker scenes (*.json);;All files (*)"));
-    if (!f.isEmpty()) doc_->media()->setMarkers(f);
+    if (!f.isEmpty()) doc_->setMediaFile(Media::File::Markers, f);
   })->setStatusTip(tr("Which ArUco markers are on which part: needed to detect the events in the video"));
   file->addSeparator();
   export_action_ = file->addAction(tr("&Export Program…"), this, [this] { showExportDialog(); });
@@ -726,7 +726,7 @@ bool MainWindow::openVideo(const QString& file_in) {
                                         tr("Videos (*.mp4 *.avi *.mkv *.mov *.m4v *.webm);;All files (*)"));
     if (file.isEmpty()) return false;
   }
-  doc_->media()->setVideo(file);
+  doc_->setMediaFile(Media::File::Video, file);
   if (!doc_->media()->videoError().isEmpty()) {
     reportError(tr("Cannot open the video"),
                 doc_->media()->videoError() + tr("\n\nCheck that the file is a complete video (mp4, avi, mkv) and try another."));
@@ -745,7 +745,7 @@ bool MainWindow::openCamera(const QString& file_in) {
                                         tr("Camera files (*.json *.yaml *.yml *.xml);;All files (*)"));
     if (file.isEmpty()) return false;
   }
-  doc_->media()->setCamera(file);
+  doc_->setMediaFile(Media::File::Camera, file);
   if (!doc_->media()->cameraError().isEmpty()) {
     reportError(tr("Cannot read the camera calibration"), doc_->media()->cameraError());
     return false;

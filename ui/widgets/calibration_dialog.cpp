@@ -186,7 +186,7 @@ bool CalibrationDialog::useCamera(const QString& camera_file) {
     showError(q(e.what()));
     return false;
   }
-  doc_->media()->setCamera(QFileInfo(camera_file).absoluteFilePath());
+  doc_->setMediaFile(Media::File::Camera, QFileInfo(camera_file).absoluteFilePath());
   summary_->setText(summary_->text() + tr("<br>Written to %1 and used for this project.").arg(camera_file));
   return true;
 }

@@ -332,7 +332,7 @@ void VideoPanel::dragEnterEvent(QDragEnterEvent* e) {
 void VideoPanel::dropEvent(QDropEvent* e) {
   for (const QUrl& u : e->mimeData()->urls())
     if (u.isLocalFile() && isVideoFile(u.toLocalFile()) && doc_->hasProject()) {
-      doc_->media()->setVideo(u.toLocalFile());
+      doc_->setMediaFile(Media::File::Video, u.toLocalFile());
       e->acceptProposedAction();
       return;
     }
