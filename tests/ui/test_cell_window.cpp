@@ -1,6 +1,7 @@
 // Markers stuck on a part by clicking it in the real main window's 3D view (OpenGL: run under
 // xvfb-run): a new cell with a block on its table, Stick Markers on, a click on the block; the
-// marker lands on the face that was clicked, facing the camera, and is listed and drawn.
+// marker lands on the face that was clicked, facing the camera, and is listed and drawn. The
+// table chosen in the Cell panel is moved with the gizmo.
 // Screenshot in build/test-artifacts/ui/.
 #include <QDir>
 #include <QListWidget>
@@ -92,6 +93,52 @@ private slots:
     panel->setStickingMarkers(false);
     QTest::mouseClick(window_->sceneView(), Qt::LeftButton, {}, px.toPoint());
     QCOMPARE(doc->cell()->parts[0].markers.size(), size_t(1));
+  }
+
+  // The table chosen in the Cell panel gets the gizmo; dragging its x arrow moves it along x
+  // only, one undo step written to the cell file.
+  void theGizmoMovesTheFurnitureChosenInTheCellPanel() {
+    Document* doc = window_->document();
+    QVERIFY(doc->cell());
+    int table = -1;
+    for (size_t f = 0; f < doc->cell()->furniture.size(); ++f)
+      if (doc->cell()->furniture[f].name == "table") table = int(f);
+    QVERIFY(table >= 0);
+    window_->cellPanel()->select(CellPanel::Kind::Furniture, table);
+    QCOMPARE(doc->selectedFurniture(), table);
+    QCOMPARE(doc->selectedObject(), -1);
+    window_->sceneView()->fitToScene();
+    QTest::qWait(60);
+    const Pose before = doc->cell()->furniture[size_t(table)].pose;
+    QPointF centre;
+    QVERIFY(window_->sceneView()->gizmoCenter(centre));
+    QPoint on_arrow;
+    bool found = false;
+    for (double s = 0.01; s <= 0.5 && !found; s += 0.005) {
+      const Eigen::Vector3d p = before.translation() + Eigen::Vector3d(s, 0, 0);
+      QPointF px;
+      window_->sceneView()->camera().project(QVector3D(float(p.x()), float(p.y()), float(p.z())), window_->sceneView()->size(), px);
+      if (window_->sceneView()->gizmoHandleAt(px) == 0) on_arrow = px.toPoint(), found = true;
+    }
+    QVERIFY(found);
+    const int steps = doc->undoStack()->count();
+    QTest::mousePress(window_->sceneView(), Qt::LeftButton, {}, on_arrow);
+    QTest::mouseMove(window_->sceneView(), on_arrow + QPoint(10, 0));
+    QTest::mouseMove(window_->sceneView(), on_arrow + QPoint(40, 3));
+    QTest::mouseRelease(window_->sceneView(), Qt::LeftButton, {}, on_arrow + QPoint(40, 3));
+    const Pose after = doc->cell()->furniture[size_t(table)].pose;
+    QVERIFY((after.translation() - before.translation()).norm() > 1e-3);
+    QCOMPARE(after.translation().y(), before.translation().y());
+    QCOMPARE(after.translation().z(), before.translation().z());
+    QCOMPARE(doc->undoStack()->count(), steps + 1);
+    QVERIFY(load_cell(doc->cell()->file).furniture[size_t(table)].pose.isApprox(after));
+    QTest::qWait(60);
+    QVERIFY(window_->grab().save(ui::test::artifactDir() + QStringLiteral("/ui/cell-furniture-gizmo.png")));
+    doc->undoStack()->undo();
+    QVERIFY(doc->cell()->furniture[size_t(table)].pose.isApprox(before));
+    // Choosing a part takes the gizmo back to the parts.
+    window_->cellPanel()->select(CellPanel::Kind::Part, 0);
+    QCOMPARE(doc->selectedFurniture(), -1);
   }
 };
 

@@ -205,6 +205,7 @@ void Document::install(Project p, std::shared_ptr<const Scene> scene, std::share
   undo_.setClean();
   selected_event_ = -1;
   selected_object_ = -1;
+  selected_furniture_ = -1;
   display_mode_ = DisplayMode::Demonstration;
   playback_t_ = 0.0;
   issues_ = validate(demonstration_);
@@ -354,6 +355,7 @@ void Document::applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, c
   issues_ = validate(demonstration_);
   if (selected_object_ >= static_cast<int>(demonstration_.object_ids.size())) selected_object_ = -1;
   if (selected_event_ >= static_cast<int>(demonstration_.events.size())) selected_event_ = -1;
+  if (selected_furniture_ >= static_cast<int>(cell_ ? cell_->furniture.size() : 0)) selected_furniture_ = -1;
   emit sceneChanged();
   emit demonstrationChanged();
   emit selectionChanged();
@@ -485,10 +487,33 @@ void Document::selectEvent(int index) {
   if (index >= 0) setCurrentFrame(demonstration_.events[index].frame);
 }
 
+void Document::selectFurniture(int index) {
+  if (!cell_ || index >= static_cast<int>(cell_->furniture.size())) index = -1;
+  if (index == selected_furniture_) return;
+  selected_furniture_ = index;
+  if (index >= 0) selected_object_ = -1;
+  emit selectionChanged();
+  emit displayChanged();
+}
+
+bool Document::moveFurniture(int index, const Pose& pose, int merge_key, QString* error) {
+  if (!cell_ || index < 0 || index >= static_cast<int>(cell_->furniture.size())) return false;
+  Cell after = *cell_;
+  after.furniture[static_cast<size_t>(index)].pose = pose;
+  try {
+    editCell(after, tr("Move %1").arg(q(after.furniture[static_cast<size_t>(index)].name)), merge_key);
+  } catch (const InputError& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return false;
+  }
+  return true;
+}
+
 void Document::selectObject(int object) {
   if (object >= static_cast<int>(demonstration_.object_ids.size())) object = -1;
-  if (object == selected_object_) return;
+  if (object == selected_object_ && (object < 0 || selected_furniture_ < 0)) return;
   selected_object_ = object;
+  if (object >= 0) selected_furniture_ = -1;
   emit selectionChanged();
   emit displayChanged();
 }

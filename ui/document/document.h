@@ -115,6 +115,13 @@ public:
   // ---- selection and time
   int selectedEvent() const { return selected_event_; }
   int selectedObject() const { return selected_object_; }
+  // A cell's furniture chosen in the Cell panel (index into cell()->furniture; -1 none): the 3D
+  // view's gizmo moves it. Selecting a part clears it and the other way round.
+  int selectedFurniture() const { return selected_furniture_; }
+  void selectFurniture(int index);
+  // The gizmo's drag: the furniture at `pose`, one undo step per drag (merge_key as editCell's).
+  // False, with the reason in `error`, when the cell refuses it (a bundled example, say).
+  bool moveFurniture(int index, const Pose& pose, int merge_key, QString* error = nullptr);
   void selectEvent(int index);  // also selects its object and moves the playhead to it
   void selectObject(int object);
   // The event the pose editor edits: the selected one, else the last at or before the playhead.
@@ -174,6 +181,7 @@ private:
   double playback_t_ = 0.0;
   // Children of this QObject, made in the constructor in this order.
   Media* media_ = nullptr;
+  int selected_furniture_ = -1;
   PlanningController* planning_ = nullptr;
   EventDetection* detection_ = nullptr;
   TrackDetection* track_detection_ = nullptr;

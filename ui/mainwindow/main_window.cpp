@@ -168,6 +168,8 @@ void MainWindow::createDocks() {
   tracks_dock_ = addDock(tr("Part Tracks"), QStringLiteral("PartTracksDock"), part_tracks_, Qt::BottomDockWidgetArea);
   cell_panel_ = new CellPanel(doc_, this);
   cell_dock_ = addDock(tr("Cell"), QStringLiteral("CellDock"), cell_panel_, Qt::LeftDockWidgetArea);
+  connect(scene_view_, &SceneView::editRefused, this,
+          [this](const QString& reason) { statusBar()->showMessage(reason, 10000); });
   // Stick Markers: a click on a part's face in the 3D view sticks a marker there.
   connect(scene_view_, &SceneView::surfacePicked, this, [this](const SceneView::SurfaceHit& hit) {
     const Cell* cell = doc_->cell();

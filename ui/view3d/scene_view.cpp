@@ -827,12 +827,20 @@ SceneView::SurfaceHit SceneView::pickSurface(const QPointF& pixel) const {
   return hit;
 }
 
-bool SceneView::gizmoFrame(QVector3D& origin, float& length, Pose& pose, int& event, int& object) const {
+bool SceneView::gizmoFrame(QVector3D& origin, float& length, Pose& pose, int& event, int& object, int& furniture) const {
   if (!scene_ || doc_->displayMode() != Document::DisplayMode::Demonstration) return false;
   object = doc_->selectedObject();
   event = doc_->editEvent();
-  if (object < 0 || event < 0) return false;
-  pose = world_pose_at_event(*scene_, doc_->demonstration(), size_t(event), object, doc_->initialConfiguration());
+  furniture = doc_->selectedFurniture();
+  const Cell* cell = doc_->cell();
+  if (furniture >= 0 && cell && furniture < int(cell->furniture.size()) && !doc_->cellIsBundled()) {
+    object = event = -1;
+    pose = cell->furniture[size_t(furniture)].pose;
+  } else {
+    furniture = -1;
+    if (object < 0 || event < 0) return false;
+    pose = world_pose_at_event(*scene_, doc_->demonstration(), size_t(event), object, doc_->initialConfiguration());
+  }
   origin = toQt(pose.translation());
   length = std::clamp((camera_.eye() - origin).length() * 0.1f, 0.06f, 0.25f);
   return true;
@@ -842,8 +850,8 @@ void SceneView::buildGizmo(LineBuffer& out) const {
   QVector3D o;
   float len;
   Pose pose;
-  int event, object;
-  if (!gizmoFrame(o, len, pose, event, object)) return;
+  int event, object, furniture;
+  if (!gizmoFrame(o, len, pose, event, object, furniture)) return;
   for (int a = 0; a < 3; ++a) {
     QVector3D e;
     e[a] = 1.0f;
@@ -873,16 +881,16 @@ bool SceneView::gizmoCenter(QPointF& pixel) const {
   QVector3D o;
   float len;
   Pose pose;
-  int event, object;
-  return gizmoFrame(o, len, pose, event, object) && camera_.project(o, size(), pixel);
+  int event, object, furniture;
+  return gizmoFrame(o, len, pose, event, object, furniture) && camera_.project(o, size(), pixel);
 }
 
 int SceneView::gizmoHandleAt(const QPointF& p) const {
   QVector3D o;
   float len;
   Pose pose;
-  int event, object;
-  if (!gizmoFrame(o, len, pose, event, object)) return -1;
+  int event, object, furniture;
+  if (!gizmoFrame(o, len, pose, event, object, furniture)) return -1;
   QPointF c;
   if (!camera_.project(o, size(), c)) return -1;
   for (int a = 0; a < 3; ++a) {
@@ -902,6 +910,16 @@ int SceneView::gizmoHandleAt(const QPointF& p) const {
   return -1;
 }
 
+void SceneView::applyGizmoPose(const Pose& T) {
+  if (drag_furniture_ >= 0) {
+    // One drag, one undo step (keys apart from the Cell panel's per-field ones).
+    QString error;
+    if (!doc_->moveFurniture(drag_furniture_, T, 1'000'000 + drag_serial_ % 800, &error)) emit editRefused(error);
+    return;
+  }
+  doc_->setObjectPose(drag_event_, drag_object_, T, 100 + drag_serial_ % 800);
+}
+
 void SceneView::mousePressEvent(QMouseEvent* e) {
   press_pos_ = last_pos_ = e->position();
   moved_ = false;
@@ -910,7 +928,7 @@ void SceneView::mousePressEvent(QMouseEvent* e) {
     if (handle >= 0) {
       QVector3D o;
       float len;
-      gizmoFrame(o, len, drag_start_pose_, drag_event_, drag_object_);
+      gizmoFrame(o, len, drag_start_pose_, drag_event_, drag_object_, drag_furniture_);
       drag_ = handle < 3 ? Drag::Axis : Drag::Ring;
       drag_axis_ = handle;
       ++drag_serial_;
@@ -959,7 +977,7 @@ void SceneView::mouseMoveEvent(QMouseEvent* e) {
       shift = std::clamp(std::round(shift / step) * step, -2.0, 2.0);
       Pose T = drag_start_pose_;
       T.translation()[drag_axis_] += shift;
-      doc_->setObjectPose(drag_event_, drag_object_, T, 100 + drag_serial_ % 800);
+      applyGizmoPose(T);
       break;
     }
     case Drag::Ring: {
@@ -973,7 +991,7 @@ void SceneView::mouseMoveEvent(QMouseEvent* e) {
       delta = std::round(delta * 180 / M_PI / step) * step * M_PI / 180;
       Pose T = drag_start_pose_;
       T.linear() = Eigen::AngleAxisd(delta, Eigen::Vector3d::UnitZ()).toRotationMatrix() * drag_start_pose_.linear();
-      doc_->setObjectPose(drag_event_, drag_object_, T, 100 + drag_serial_ % 800);
+      applyGizmoPose(T);
       break;
     }
     case Drag::None: {

@@ -4,8 +4,8 @@
 // the planner's trees as they grow (nodes at the gripper positions they reach, edges as lines,
 // one colour per tree, roots at the video's transitions marked); the planned gripper trace.
 // Mouse: left-drag orbits, right- or middle-drag (or Shift+left) pans, the wheel zooms, F fits,
-// a click selects a part; the selected part gets a gizmo: drag an arrow to move it along a world
-// axis, the ring to turn it about the vertical.
+// a click selects a part; the selected part (or a cell's furniture chosen in the Cell panel) gets
+// a gizmo: drag an arrow to move it along a world axis, the ring to turn it about the vertical.
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLWidget>
 #include <memory>
@@ -62,6 +62,8 @@ signals:
   void objectPicked(int object);
   // A click on a part (also reported by objectPicked): where it met its surface.
   void surfacePicked(const demoplan::ui::SceneView::SurfaceHit& hit);
+  // A gizmo drag the document refused (the reason, naming the file).
+  void editRefused(const QString& reason);
 
 protected:
   void initializeGL() override;
@@ -112,7 +114,10 @@ private:
   void updateHud();
   // World transform of every item for the displayed state.
   std::vector<QMatrix4x4> itemTransforms() const;
-  bool gizmoFrame(QVector3D& origin, float& length, Pose& pose, int& event, int& object) const;
+  // What the gizmo moves: a part at an event (object, event), or a cell's furniture (furniture
+  // >= 0, object and event -1).
+  bool gizmoFrame(QVector3D& origin, float& length, Pose& pose, int& event, int& object, int& furniture) const;
+  void applyGizmoPose(const Pose& pose);
   void buildGizmo(LineBuffer& out) const;
 
   Document* doc_;
@@ -142,7 +147,7 @@ private:
   bool moved_ = false;
   int drag_axis_ = -1;
   Pose drag_start_pose_ = Pose::Identity();
-  int drag_event_ = -1, drag_object_ = -1;
+  int drag_event_ = -1, drag_object_ = -1, drag_furniture_ = -1;
   int drag_serial_ = 0;
 };
 

@@ -162,6 +162,8 @@ CellPanel::CellPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc
     selection_ = {static_cast<Kind>(item->data(0, kKindRole).toInt()), item->data(0, kIndexRole).toInt()};
     if (selection_.kind == Kind::Part && doc_->cell())
       doc_->selectObject(doc_->scene().object_index(doc_->cell()->parts[static_cast<size_t>(selection_.index)].name));
+    else  // furniture gets the 3D view's gizmo; the robot and the folders none
+      doc_->selectFurniture(selection_.kind == Kind::Furniture ? selection_.index : -1);
     showSelection();
   });
   connect(doc_, &Document::projectLoaded, this, [this] {
