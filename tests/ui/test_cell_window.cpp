@@ -1,7 +1,7 @@
 // Markers stuck on a part by clicking it in the real main window's 3D view (OpenGL: run under
 // xvfb-run): a new cell with a block on its table, Stick Markers on, a click on the block; the
 // marker lands on the face that was clicked, facing the camera, and is listed and drawn. The
-// table chosen in the Cell panel is moved with the gizmo.
+// table is clicked and moved with the gizmo.
 // Screenshot in build/test-artifacts/ui/.
 #include <QDir>
 #include <QListWidget>
@@ -95,21 +95,29 @@ private slots:
     QCOMPARE(doc->cell()->parts[0].markers.size(), size_t(1));
   }
 
-  // The table chosen in the Cell panel gets the gizmo; dragging its x arrow moves it along x
-  // only, one undo step written to the cell file.
-  void theGizmoMovesTheFurnitureChosenInTheCellPanel() {
+  // The table clicked in the 3D view is chosen in the Cell panel and gets the gizmo; dragging its
+  // x arrow moves it along x only, one undo step written to the cell file.
+  void theGizmoMovesTheFurnitureClickedInTheView() {
     Document* doc = window_->document();
     QVERIFY(doc->cell());
     int table = -1;
     for (size_t f = 0; f < doc->cell()->furniture.size(); ++f)
       if (doc->cell()->furniture[f].name == "table") table = int(f);
     QVERIFY(table >= 0);
-    window_->cellPanel()->select(CellPanel::Kind::Furniture, table);
-    QCOMPARE(doc->selectedFurniture(), table);
-    QCOMPARE(doc->selectedObject(), -1);
+    // A click on the table top, away from the block, chooses it.
+    doc->selectObject(-1);
     window_->sceneView()->fitToScene();
     QTest::qWait(60);
     const Pose before = doc->cell()->furniture[size_t(table)].pose;
+    const Eigen::Vector3d block = doc->displayState().objects.at(0).translation();
+    const Eigen::Vector3d top(before.translation().x(), block.y() > before.translation().y() ? -0.4 : 0.4, 0.75);
+    QPointF on_top;
+    window_->sceneView()->camera().project(QVector3D(float(top.x()), float(top.y()), float(top.z())),
+                                           window_->sceneView()->size(), on_top);
+    QTest::mouseClick(window_->sceneView(), Qt::LeftButton, {}, on_top.toPoint());
+    QCOMPARE(doc->selectedFurniture(), table);
+    QCOMPARE(window_->cellPanel()->selection().kind, CellPanel::Kind::Furniture);
+    QCOMPARE(doc->selectedObject(), -1);
     QPointF centre;
     QVERIFY(window_->sceneView()->gizmoCenter(centre));
     QPoint on_arrow;

@@ -170,6 +170,20 @@ void MainWindow::createDocks() {
   cell_dock_ = addDock(tr("Cell"), QStringLiteral("CellDock"), cell_panel_, Qt::LeftDockWidgetArea);
   connect(scene_view_, &SceneView::editRefused, this,
           [this](const QString& reason) { statusBar()->showMessage(reason, 10000); });
+  // A click on a cell's furniture chooses it in the Cell panel (and gives it the gizmo).
+  connect(scene_view_, &SceneView::furniturePicked, this, [this](int f) {
+    const Cell* cell = doc_->cell();
+    if (!cell) return;
+    const std::string& name = doc_->scene().furniture.at(static_cast<size_t>(f)).name;
+    for (size_t k = 0; k < cell->furniture.size(); ++k)
+      if (cell->furniture[k].name == name) {
+        cell_dock_->raise();
+        cell_panel_->select(CellPanel::Kind::Furniture, static_cast<int>(k));
+        statusBar()->showMessage(tr("Selected %1: drag the gizmo or type its pose in the Cell panel")
+                                     .arg(QString::fromStdString(name)), 5000);
+        return;
+      }
+  });
   // Stick Markers: a click on a part's face in the 3D view sticks a marker there.
   connect(scene_view_, &SceneView::surfacePicked, this, [this](const SceneView::SurfaceHit& hit) {
     const Cell* cell = doc_->cell();

@@ -791,9 +791,10 @@ SceneView::SurfaceHit SceneView::pickSurface(const QPointF& pixel) const {
   float best_t = 1e30f;
   int best_item = -1;
   QVector3D best_a, best_b, best_c, best_o, best_d;  // in the item's mesh frame
+  const bool furniture_too = doc_->cell() != nullptr;  // a cell's furniture is edited, not the benchmark's
   for (size_t i = 0; i < items_.size(); ++i) {
     const Item& it = items_[i];
-    if (it.owner != Owner::Object) continue;
+    if (it.owner != Owner::Object && !(furniture_too && it.owner == Owner::Furniture)) continue;
     const QMatrix4x4 inv = transforms[i].inverted();
     const QVector3D o = inv.map(ray.origin);
     const QVector3D d = inv.mapVector(ray.direction);
@@ -813,6 +814,10 @@ SceneView::SurfaceHit SceneView::pickSurface(const QPointF& pixel) const {
     }
   }
   if (best_item < 0) return hit;
+  if (items_[size_t(best_item)].owner == Owner::Furniture) {
+    hit.furniture = items_[size_t(best_item)].index;
+    return hit;
+  }
   // The hit and the triangle's normal, facing the ray's origin, into the world, then the part's frame.
   const QMatrix4x4& M = transforms[size_t(best_item)];
   const QVector3D wa = M.map(best_a);
@@ -1011,6 +1016,7 @@ void SceneView::mouseReleaseEvent(QMouseEvent* e) {
     doc_->selectObject(hit.object);
     emit objectPicked(hit.object);
     if (hit.object >= 0) emit surfacePicked(hit);
+    if (hit.furniture >= 0) emit furniturePicked(hit.furniture);
   }
   update();
 }

@@ -32,9 +32,11 @@ public:
   // The part under a pixel (widget coordinates), -1 for none.
   int pickObject(const QPointF& pixel) const;
   // Where the ray through a pixel first meets a part: the point and the face's normal (towards
-  // the camera) in the part's frame, metres. object -1 for none.
+  // the camera) in the part's frame, metres. object -1 for none; on a cell's project furniture
+  // is hit too (furniture set, object -1).
   struct SurfaceHit {
     int object = -1;
+    int furniture = -1;  // on a cell's project: the scene furniture hit first, when no part is nearer
     Eigen::Vector3d point = Eigen::Vector3d::Zero();
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   };
@@ -62,6 +64,8 @@ signals:
   void objectPicked(int object);
   // A click on a part (also reported by objectPicked): where it met its surface.
   void surfacePicked(const demoplan::ui::SceneView::SurfaceHit& hit);
+  // A click on a cell's furniture (its index in the scene's furniture).
+  void furniturePicked(int furniture);
   // A gizmo drag the document refused (the reason, naming the file).
   void editRefused(const QString& reason);
 
