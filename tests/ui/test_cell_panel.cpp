@@ -73,6 +73,28 @@ private slots:
     QCOMPARE(load_cell(doc_->cell()->file).furniture.size(), size_t(3));
   }
 
+  void furnitureFromAUrdfTakesTheSupportsOfItsSrdf() {
+    // The benchmark's shelf: shelf_2_1_shelf.urdf with its SRDF beside it.
+    const QString urdf = ui::test::dataDir() + QStringLiteral("/furniture/shelf_2_1_shelf.urdf");
+    QVERIFY2(panel_->addFurniture(CellFurniture::Kind::Urdf, urdf), qPrintable(panel_->lastError()));
+    const CellFurniture& f = doc_->cell()->furniture.back();
+    QCOMPARE(f.kind, CellFurniture::Kind::Urdf);
+    QVERIFY(QString::fromStdString(f.srdf).endsWith(QStringLiteral("shelf_2_1_shelf.srdf")));
+    int supports = 0;
+    for (const auto& sf : doc_->scene().furniture)
+      if (sf.name == f.name)
+        for (const auto& c : sf.srdf.contacts) supports += static_cast<int>(c.polygons.size());
+    QVERIFY(supports > 0);
+    QCOMPARE(load_cell(doc_->cell()->file).furniture.back().kind, CellFurniture::Kind::Urdf);
+    // Not a URDF: refused naming the file, the cell unchanged.
+    const std::string bad = path("not_a_robot.urdf");
+    std::ofstream(bad) << "<robot name='x'><link name='a'/><joint/></robot>";
+    const size_t count = doc_->cell()->furniture.size();
+    QVERIFY(!panel_->addFurniture(CellFurniture::Kind::Urdf, QString::fromStdString(bad)));
+    QVERIFY2(panel_->lastError().contains(QStringLiteral("not_a_robot.urdf")), qPrintable(panel_->lastError()));
+    QCOMPARE(doc_->cell()->furniture.size(), count);
+  }
+
   void aPartFromAnStlRestsOnTheTableWithGrasps() {
     const std::string stl = path("block.stl");
     demoplan::test::write_box_stl(stl, 40, 30, 20);  // millimetres

@@ -83,6 +83,12 @@ CellPanel::CellPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc
   menu->addAction(tr("Box"), this, [this] { addFurniture(CellFurniture::Kind::Box); });
   menu->addAction(tr("Cylinder"), this, [this] { addFurniture(CellFurniture::Kind::Cylinder); });
   menu->addAction(tr("Mesh File…"), this, &CellPanel::addMeshFurnitureFromDialog);
+  menu->addAction(tr("URDF File…"), this, [this] {
+    const QString file = QFileDialog::getOpenFileName(this, tr("Add furniture from its URDF (an SRDF of the same name "
+                                                               "beside it gives its support surfaces)"),
+                                                      {}, tr("URDF files (*.urdf *.URDF)"));
+    if (!file.isEmpty()) addFurniture(CellFurniture::Kind::Urdf, file);
+  });
   add_furniture->setMenu(menu);
   remove_ = new QPushButton(tr("Remove"), this);
   remove_->setToolTip(tr("Remove the selected furniture or part from the cell"));
@@ -370,10 +376,14 @@ bool CellPanel::addFurniture(CellFurniture::Kind kind, const QString& mesh_file,
     f.length = 0.75;
     f.pose.translation() = Eigen::Vector3d(0.6, y, 0.375);
   } else {
-    f.name = unique_cell_name(after, QFileInfo(mesh_file).completeBaseName().toStdString());
-    f.file = QFileInfo(mesh_file).absoluteFilePath().toStdString();
+    const QFileInfo info(mesh_file);
+    f.name = unique_cell_name(after, info.completeBaseName().toStdString());
+    f.file = info.absoluteFilePath().toStdString();
     f.scale = scale;
     f.pose.translation() = Eigen::Vector3d(0.6, y, 0.0);
+    // A URDF's support surfaces come from the SRDF beside it, when there is one (NAME.srdf).
+    const QFileInfo srdf(info.absolutePath() + QLatin1Char('/') + info.completeBaseName() + QStringLiteral(".srdf"));
+    if (kind == CellFurniture::Kind::Urdf && srdf.exists()) f.srdf = srdf.absoluteFilePath().toStdString();
   }
   after.furniture.push_back(f);
   if (!edit(after, tr("Add %1").arg(q(f.name)))) return false;

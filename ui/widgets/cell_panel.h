@@ -36,7 +36,8 @@ public:
   // What the buttons do after their file dialogs; false when the cell refused it (the reason is
   // shown in the panel and returned by lastError()).
   bool addPart(const QString& mesh_file, double scale);
-  bool addFurniture(CellFurniture::Kind kind, const QString& mesh_file = {}, double scale = 1.0);
+  // `file`: the mesh (Kind::Mesh) or the URDF (Kind::Urdf, its SRDF the NAME.srdf beside it).
+  bool addFurniture(CellFurniture::Kind kind, const QString& file = {}, double scale = 1.0);
   bool removeSelected();
   bool deleteHandle(int part, int handle);
   bool regenerateHandles(int part);
