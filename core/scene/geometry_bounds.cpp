@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/geometry/box_overlap.h"
 
@@ -11,7 +12,8 @@ namespace {
 
 using Vec = Eigen::Vector3d;
 
-GeometryBound primitive(GeometryBound::Kind kind, const Vec& half, double circumradius) {
+GeometryBound primitive(GeometryBound::Kind kind, const Vec& half, double circumradius,
+                        std::vector<Vec> witnesses = {}) {
   GeometryBound b;
   b.kind = kind;
   b.half = half;
@@ -21,6 +23,7 @@ GeometryBound primitive(GeometryBound::Kind kind, const Vec& half, double circum
   set->parts = {set->all};
   set->children = {set->all};
   set->children_begin = {0, 1};
+  set->witnesses = std::move(witnesses);
   b.spheres = std::move(set);
   return b;
 }
@@ -106,12 +109,17 @@ bool sphere_sets_apart(const PlacedBound& a, const PlacedBound& b) {
   return true;
 }
 
+// How far apart two placed bodies must be proven (or how deep a corner must lie) to answer
+// without FCL: as the spheres' margin, 1 um plus 1e-9 of the distances from the origin.
+double margin_between(const PlacedBound& a, const PlacedBound& b) {
+  return 1e-6 + 1e-9 * (a.pose->translation().norm() + b.pose->translation().norm());
+}
+
 // Two boxes by the separating axis test (core/geometry/box_overlap.h), one grown by the
 // margin: exact, so a base box beside a table's legs or under its top is told apart without
 // FCL, where the boxes' bounding spheres overlap.
 bool boxes_apart(const PlacedBound& a, const PlacedBound& b) {
-  const double margin = 1e-6 + 1e-9 * (a.pose->translation().norm() + b.pose->translation().norm());
-  return !boxes_overlap(*a.pose, a.bound->half + Vec::Constant(margin), *b.pose, b.bound->half);
+  return !boxes_overlap(*a.pose, a.bound->half + Vec::Constant(margin_between(a, b)), *b.pose, b.bound->half);
 }
 
 bool is_primitive(const GeometryBound& b) {
@@ -139,7 +147,7 @@ bool witness_inside(const PlacedBound& w, const PlacedBound& p) {
   const Eigen::Matrix3d Rt = p.pose->linear().transpose();
   const Eigen::Matrix3d R = Rt * w.pose->linear();
   const Vec t = Rt * (w.pose->translation() - p.pose->translation());
-  const double margin = 1e-6 + 1e-9 * (w.pose->translation().norm() + p.pose->translation().norm());
+  const double margin = margin_between(w, p);
   for (const Vec& v : w.bound->spheres->witnesses)
     if (depth_inside(*p.bound, R * v + t) > margin) return true;
   return false;
@@ -149,12 +157,10 @@ bool witness_inside(const PlacedBound& w, const PlacedBound& p) {
 
 GeometryBound box_bound(const Eigen::Vector3d& size) {
   const Vec half = 0.5 * size;
-  GeometryBound b = primitive(GeometryBound::Kind::Box, half, half.norm());
-  auto set = std::make_shared<SphereSet>(*b.spheres);
+  std::vector<Vec> corners;
   for (int i = 0; i < 8; ++i)
-    set->witnesses.emplace_back(i & 1 ? half.x() : -half.x(), i & 2 ? half.y() : -half.y(), i & 4 ? half.z() : -half.z());
-  b.spheres = std::move(set);
-  return b;
+    corners.emplace_back(i & 1 ? half.x() : -half.x(), i & 2 ? half.y() : -half.y(), i & 4 ? half.z() : -half.z());
+  return primitive(GeometryBound::Kind::Box, half, half.norm(), std::move(corners));
 }
 
 GeometryBound cylinder_bound(double radius, double length) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/cell/part_markers.h"
 #include "perception/markers/marker_dictionary.h"
 
 namespace demoplan::perception {
@@ -18,15 +19,12 @@ std::vector<ObjectMarker> box_face_markers(const Eigen::AlignedBox3d& bounds, in
   for (int axis = 0; axis < 3; ++axis)
     for (int sign : {+1, -1}) {
       const Eigen::Vector3d z = sign * Eigen::Vector3d::Unit(axis);
-      // The printed image's "up": +z of the part on its sides, +x on top and bottom.
-      const Eigen::Vector3d y = axis == 2 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitZ();
       const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
       ObjectMarker m;
       m.id = id++;
       m.size = std::min(options.max_size, options.face_fraction * 2 * std::min(h[a1], h[a2]));
-      m.object_T_marker.linear().col(0) = y.cross(z);
-      m.object_T_marker.linear().col(1) = y;
-      m.object_T_marker.linear().col(2) = z;
+      // The printed image's "up": +z of the part on its sides, +x on top and bottom.
+      m.object_T_marker.linear() = marker_frame_on_face(z);
       m.object_T_marker.translation() = c + z * (h[axis] + options.standoff);
       out.push_back(m);
     }

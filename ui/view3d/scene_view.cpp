@@ -15,6 +15,7 @@
 #include <limits>
 
 #include "core/geometry/ray_box.h"
+#include "core/geometry/ray_triangle.h"
 #include "core/scene/support.h"
 #include "ui/document/demo_poses.h"
 #include "ui/widgets/style.h"
@@ -116,22 +117,14 @@ Primitive unitSphere(int rings = 16, int segments = 24) {
   return p;
 }
 
-// Ray against a triangle (Moller-Trumbore); t along the (unnormalised) direction.
+// Ray against a triangle (core's ray_triangle); t along the (unnormalised) direction, ahead only.
 bool rayTriangle(const QVector3D& o, const QVector3D& d, const QVector3D& v0, const QVector3D& v1, const QVector3D& v2,
                  float& t) {
-  const QVector3D e1 = v1 - v0, e2 = v2 - v0;
-  const QVector3D h = QVector3D::crossProduct(d, e2);
-  const float a = QVector3D::dotProduct(e1, h);
-  if (std::abs(a) < 1e-12f) return false;
-  const float f = 1.0f / a;
-  const QVector3D s = o - v0;
-  const float u = f * QVector3D::dotProduct(s, h);
-  if (u < 0 || u > 1) return false;
-  const QVector3D q = QVector3D::crossProduct(s, e1);
-  const float v = f * QVector3D::dotProduct(d, q);
-  if (v < 0 || u + v > 1) return false;
-  t = f * QVector3D::dotProduct(e2, q);
-  return t > 0;
+  auto e = [](const QVector3D& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); };
+  const std::optional<double> hit = ray_triangle(e(o), e(d), e(v0), e(v1), e(v2));
+  if (!hit || !(*hit > 0)) return false;
+  t = float(*hit);
+  return true;
 }
 
 bool rayBox(const QVector3D& o, const QVector3D& d, const Eigen::AlignedBox3f& box) {
