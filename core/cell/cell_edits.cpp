@@ -7,6 +7,7 @@
 #include "core/demo/benchmark_scene.h"
 #include "core/error.h"
 #include "core/model/mesh.h"
+#include "core/model/package_paths.h"
 #include "core/scene/collision_checker.h"
 #include "core/scene/resting_pose_sampler.h"
 
@@ -51,6 +52,27 @@ Cell starter_cell(const std::string& file, const std::string& robot, const std::
   table.pose.translation() = Eigen::Vector3d(r.fixed_base ? 0.65 : 1.2, 0, top / 2);
   c.furniture.push_back(table);
   return c;
+}
+
+void replace_robot(Cell& cell, const std::string& bundled, const std::string& urdf, const std::string& srdf,
+                   const std::string& data_dir) {
+  CellRobot robot;
+  robot.base = cell.robot.base;
+  if (!bundled.empty()) {
+    const BenchmarkRobot r = load_benchmark_robot(data_dir, bundled);  // throws for an unknown robot
+    robot.bundled = bundled;
+    robot.mobile = !r.fixed_base;
+  } else {
+    for (const auto& [path, what] : {std::pair{urdf, "robot URDF"}, std::pair{srdf, "robot SRDF"}})
+      if (!std::filesystem::is_regular_file(path)) throw InputError(path, "", std::string(what) + ": no such file");
+    robot.urdf = std::filesystem::absolute(urdf).lexically_normal().string();
+    robot.srdf = std::filesystem::absolute(srdf).lexically_normal().string();
+    for (const std::string& dir : guess_package_paths(robot.urdf))
+      if (std::find(cell.package_paths.begin(), cell.package_paths.end(), dir) == cell.package_paths.end())
+        cell.package_paths.push_back(dir);
+  }
+  if (robot.mobile) robot.base.translation().z() = 0.0;  // a mobile base drives on the floor
+  cell.robot = robot;
 }
 
 double guess_unit_scale(const std::string& mesh_file) {

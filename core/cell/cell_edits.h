@@ -18,6 +18,15 @@ std::string unique_cell_name(const Cell& cell, const std::string& base);
 // its top; no part yet.
 Cell starter_cell(const std::string& file, const std::string& robot, const std::string& data_dir);
 
+// `cell` with its robot replaced: the bundled robot `bundled` (a name of robots.json), or, when
+// it is empty, the robot of `urdf` and `srdf` from disk (its package:// meshes looked for around
+// the URDF, guess_package_paths, and those folders added to the cell's package_paths). The base
+// pose is kept (a mobile robot's put on the floor); the start configuration becomes the new
+// robot's own. Throws InputError naming the robot or the file; loading the cell's scene then says
+// whether the robot itself can be read.
+void replace_robot(Cell& cell, const std::string& bundled, const std::string& urdf, const std::string& srdf,
+                   const std::string& data_dir);
+
 // Metres per unit of a mesh file, guessed from its size: CAD files of shop-floor parts are in
 // millimetres (an extent above 3 units), scanned ones in metres.
 double guess_unit_scale(const std::string& mesh_file);

@@ -1,11 +1,16 @@
 // The edits of the cell editor, without the GUI: a starter cell that loads collision-free for a
 // fixed and a mobile robot, names that do not clash, a part from an STL put down on a free spot
 // of the table (the same spot for the same cell, clear of the parts already there), and the
-// demonstration kept in step when parts come and go.
+// demonstration kept in step when parts come and go; the robot replaced by a bundled one or by a
+// URDF + SRDF laid out as a ROS package (its package:// folder found).
 #include <gtest/gtest.h>
+#include <algorithm>
+#include <fstream>
+#include <sstream>
 
 #include "core/cell/cell_edits.h"
 #include "core/error.h"
+#include "core/model/package_paths.h"
 #include "core/scene/collision_checker.h"
 #include "tests/support/box_stl.h"
 #include "tests/support/temp_folder.h"
@@ -170,6 +175,86 @@ TEST(CellPartCache, ServesWhatAFreshBuildGives) {
   ASSERT_EQ(larger.objects[0].srdf.handles.size(), larger_fresh.objects[0].srdf.handles.size());
   EXPECT_TRUE(larger.objects[0].srdf.handles[0].pose.isApprox(larger_fresh.objects[0].srdf.handles[0].pose));
   EXPECT_FALSE(larger.objects[0].srdf.handles[0].pose.isApprox(fresh.objects[0].srdf.handles[0].pose));
+}
+
+}  // namespace
+}  // namespace demoplan
+
+namespace demoplan {
+namespace {
+
+// The bundled UR5 laid out as ROS packages would be (my_arm_description/urdf/arm.urdf, its meshes
+// as package://my_arm_description/meshes/..., its hand's as package://franka_description/...)
+// under `root`; returns the URDF's path.
+std::string write_ros_package_robot(const std::filesystem::path& root) {
+  namespace fs = std::filesystem;
+  const fs::path source = fs::path(DEMOPLAN_DATA_DIR) / "robots/ur5";
+  const fs::path package = root / "src/my_arm_description";
+  fs::create_directories(package / "urdf");
+  fs::copy(source / "meshes", package / "meshes", fs::copy_options::recursive);
+  std::ifstream in(source / "ur5.urdf");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string urdf = text.str();
+  // Its hand is the Panda's, from a second package.
+  fs::create_directories(root / "src/franka_description");
+  fs::copy(source / "../franka_panda/meshes", root / "src/franka_description/meshes", fs::copy_options::recursive);
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"filename=\"meshes/", "filename=\"package://my_arm_description/meshes/"},
+                                 {"filename=\"../franka_panda/meshes/", "filename=\"package://franka_description/meshes/"}})
+    for (size_t at = urdf.find(from); at != std::string::npos; at = urdf.find(from, at + to.size()))
+      urdf.replace(at, from.size(), to);
+  std::ofstream(package / "urdf/arm.urdf") << urdf;
+  fs::copy_file(source / "ur5.srdf", package / "urdf/arm.srdf");
+  return (package / "urdf/arm.urdf").string();
+}
+
+TEST(CellEdits, TheRobotIsReplacedByABundledOneOrOneFromFiles) {
+  test::TempFolder dir("demoplan_cell_edits");
+  Cell cell = starter_cell(dir.file("cell.json"), "ur5", DEMOPLAN_DATA_DIR);
+  const Pose base = cell.robot.base;
+  const int ur5_joints = build_cell_scene(cell, {.data_dir = DEMOPLAN_DATA_DIR}).robot.model.nq;
+
+  replace_robot(cell, "panda", "", "", DEMOPLAN_DATA_DIR);
+  EXPECT_EQ(cell.robot.bundled, "panda");
+  EXPECT_FALSE(cell.robot.mobile);
+  EXPECT_TRUE(cell.robot.base.isApprox(base));
+  EXPECT_EQ(build_cell_scene(cell, {.data_dir = DEMOPLAN_DATA_DIR}).robot.name, "panda");
+  replace_robot(cell, "kmr_iiwa", "", "", DEMOPLAN_DATA_DIR);
+  EXPECT_TRUE(cell.robot.mobile);
+  EXPECT_EQ(cell.robot.base.translation().z(), 0.0);  // on the floor, not on the pedestal
+  EXPECT_THROW(replace_robot(cell, "no_such_robot", "", "", DEMOPLAN_DATA_DIR), InputError);
+
+  // A robot from disk whose meshes are package:// URIs: the folder holding the package is found
+  // two levels above the URDF and the robot loads from it.
+  const std::string urdf = write_ros_package_robot(dir.path() / "ws");
+  std::vector<std::string> packages = urdf_package_names(urdf);
+  std::sort(packages.begin(), packages.end());
+  EXPECT_EQ(packages, (std::vector<std::string>{"franka_description", "my_arm_description"}));
+  const std::string srdf = (std::filesystem::path(urdf).parent_path() / "arm.srdf").string();
+  replace_robot(cell, "", urdf, srdf, DEMOPLAN_DATA_DIR);
+  EXPECT_TRUE(cell.robot.bundled.empty());
+  EXPECT_FALSE(cell.robot.mobile);
+  ASSERT_EQ(cell.package_paths.size(), 1u);
+  EXPECT_EQ(std::filesystem::path(cell.package_paths[0]), (dir.path() / "ws/src").lexically_normal());
+  const Scene scene = build_cell_scene(cell, {.data_dir = DEMOPLAN_DATA_DIR});
+  EXPECT_EQ(scene.robot.model.nq, ur5_joints);
+  EXPECT_GE(scene.robot.gripper_link, 0);
+  // Saved and loaded, the cell keeps the files and the package folder.
+  save_cell(cell.file, cell);
+  const Cell loaded = load_cell(cell.file);
+  EXPECT_EQ(loaded.robot.urdf, cell.robot.urdf);
+  EXPECT_EQ(loaded.package_paths, cell.package_paths);
+
+  // Without the package folder the load names the mesh it cannot find.
+  Cell lost = cell;
+  lost.package_paths.clear();
+  try {
+    build_cell_scene(lost, {.data_dir = DEMOPLAN_DATA_DIR});
+    ADD_FAILURE() << "a robot whose meshes cannot be found was loaded";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("package://my_arm_description/meshes"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(replace_robot(cell, "", dir.file("missing.urdf"), srdf, DEMOPLAN_DATA_DIR), InputError);
 }
 
 }  // namespace

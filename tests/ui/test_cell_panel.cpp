@@ -95,6 +95,42 @@ private slots:
     QCOMPARE(doc_->cell()->furniture.size(), count);
   }
 
+  void theRobotIsReplacedUndoneAndReadFromFiles() {
+    const std::string stl = path("block.stl");
+    demoplan::test::write_box_stl(stl, 40, 30, 20);
+    QVERIFY2(panel_->addPart(QString::fromStdString(stl), 0.001), qPrintable(panel_->lastError()));
+    auto handle_poses = [this] {
+      std::vector<Pose> poses;
+      for (const auto& h : doc_->scene().objects.at(0).srdf.handles) poses.push_back(h.pose);
+      return poses;
+    };
+    const int steps = doc_->undoStack()->count();
+    QVERIFY2(panel_->replaceRobot(QStringLiteral("panda")), qPrintable(panel_->lastError()));
+    QCOMPARE(doc_->scene().robot.name, std::string("panda"));
+    QCOMPARE(load_cell(doc_->cell()->file).robot.bundled, std::string("panda"));
+    QCOMPARE(panel_->selection().kind, CellPanel::Kind::Robot);
+    QCOMPARE(panel_->tree()->topLevelItem(0)->text(0), QStringLiteral("Robot: panda"));
+    QVERIFY(!handle_poses().empty());  // generated again for the new robot's gripper
+    QCOMPARE(doc_->undoStack()->count(), steps + 1);
+    doc_->undoStack()->undo();
+    QCOMPARE(doc_->scene().robot.name, std::string("ur5"));
+    QCOMPARE(load_cell(doc_->cell()->file).robot.bundled, std::string("ur5"));
+
+    // The user's own files: the bundled iiwa's URDF and SRDF, read as any URDF from disk.
+    const QString iiwa = ui::test::dataDir() + QStringLiteral("/robots/kuka_iiwa/kuka_iiwa");
+    QVERIFY2(panel_->replaceRobot({}, iiwa + QStringLiteral(".urdf"), iiwa + QStringLiteral(".srdf")),
+             qPrintable(panel_->lastError()));
+    QVERIFY(doc_->cell()->robot.bundled.empty());
+    QVERIFY(doc_->scene().robot.model.nq >= 7);
+    QCOMPARE(panel_->tree()->topLevelItem(0)->text(0), QStringLiteral("Robot: kuka_iiwa.urdf"));
+    // A URDF that is not a robot is refused naming the file; the cell keeps the iiwa.
+    const std::string bad = path("broken_arm.urdf");
+    std::ofstream(bad) << "<robot name='x'><link name='a'/><joint/></robot>";
+    QVERIFY(!panel_->replaceRobot({}, QString::fromStdString(bad), iiwa + QStringLiteral(".srdf")));
+    QVERIFY2(panel_->lastError().contains(QStringLiteral("broken_arm.urdf")), qPrintable(panel_->lastError()));
+    QVERIFY(doc_->cell()->robot.urdf.ends_with("kuka_iiwa.urdf"));
+  }
+
   void aPartFromAnStlRestsOnTheTableWithGrasps() {
     const std::string stl = path("block.stl");
     demoplan::test::write_box_stl(stl, 40, 30, 20);  // millimetres

@@ -19,6 +19,7 @@
 
 #include "core/cell/cell_edits.h"
 #include "core/cell/part_markers.h"
+#include "core/demo/benchmark_scene.h"
 #include "core/error.h"
 #include "ui/widgets/pose_fields.h"
 
@@ -90,6 +91,23 @@ CellPanel::CellPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc
     if (!file.isEmpty()) addFurniture(CellFurniture::Kind::Urdf, file);
   });
   add_furniture->setMenu(menu);
+  auto* robot = new QToolButton(this);
+  robot->setText(tr("Robot"));
+  robot->setToolTip(tr("Replace the cell's robot: a bundled one, or your own from its URDF and SRDF files"));
+  robot->setPopupMode(QToolButton::InstantPopup);
+  auto* robot_menu = new QMenu(robot);
+  connect(robot_menu, &QMenu::aboutToShow, this, [this, robot_menu] {
+    robot_menu->clear();
+    const Cell* cell = doc_->cell();
+    for (const auto& name : list_benchmark_robots(doc_->dataDir())) {
+      QAction* a = robot_menu->addAction(q(name), this, [this, name] { replaceRobot(q(name)); });
+      a->setCheckable(true);
+      a->setChecked(cell && cell->robot.bundled == name);
+    }
+    robot_menu->addSeparator();
+    robot_menu->addAction(tr("URDF and SRDF Files…"), this, &CellPanel::replaceRobotFromDialog);
+  });
+  robot->setMenu(robot_menu);
   remove_ = new QPushButton(tr("Remove"), this);
   remove_->setToolTip(tr("Remove the selected furniture or part from the cell"));
   connect(remove_, &QPushButton::clicked, this, &CellPanel::removeSelected);
@@ -98,6 +116,7 @@ CellPanel::CellPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc
   connect(save_as, &QPushButton::clicked, this, &CellPanel::saveCellAs);
   buttons->addWidget(add_part);
   buttons->addWidget(add_furniture);
+  buttons->addWidget(robot);
   buttons->addWidget(remove_);
   buttons->addStretch(1);
   buttons->addWidget(save_as);
@@ -265,9 +284,17 @@ void CellPanel::showSelection() {
   if (s.kind == Kind::Robot) {
     pose_->setTitle(tr("Robot base in the world"));
     pose_->setPose(cell->robot.base, true);
-    info_->setText(cell->robot.mobile ? tr("A mobile robot: its base moves through joints of its own; this is where they "
-                                           "start from.")
-                                      : tr("Where the robot's base stands."));
+    const SceneRobot& r = doc_->scene().robot;
+    const QString source = cell->robot.bundled.empty()
+                               ? tr("%1 with %2").arg(fileName(cell->robot.urdf), fileName(cell->robot.srdf))
+                               : tr("bundled %1").arg(q(cell->robot.bundled));
+    info_->setText(tr("%1: %2 joints, gripper %3. %4 Robot > replaces it.")
+                       .arg(source)
+                       .arg(r.model.nq)
+                       .arg(r.srdf.grippers.empty() ? tr("none") : q(r.gripper().name))
+                       .arg(cell->robot.mobile ? tr("A mobile robot: its base moves through joints of its own; this is "
+                                                    "where they start from.")
+                                               : tr("Where the robot's base stands.")));
   } else if (s.kind == Kind::Furniture) {
     const CellFurniture& f = cell->furniture[static_cast<size_t>(s.index)];
     pose_->setTitle(tr("Pose of %1 in the world").arg(q(f.name)));
@@ -389,6 +416,36 @@ bool CellPanel::addFurniture(CellFurniture::Kind kind, const QString& mesh_file,
   if (!edit(after, tr("Add %1").arg(q(f.name)))) return false;
   select(Kind::Furniture, static_cast<int>(after.furniture.size()) - 1);
   return true;
+}
+
+bool CellPanel::replaceRobot(const QString& bundled, const QString& urdf, const QString& srdf) {
+  if (!doc_->cell()) return false;
+  Cell after = *doc_->cell();
+  try {
+    replace_robot(after, bundled.toStdString(), urdf.toStdString(), srdf.toStdString(), doc_->dataDir());
+  } catch (const InputError& e) {
+    showError(q(e.what()));
+    return false;
+  }
+  const QString name = bundled.isEmpty() ? QFileInfo(urdf).fileName() : bundled;
+  if (!edit(after, tr("Replace the robot by %1").arg(name))) return false;
+  select(Kind::Robot, 0);
+  return true;
+}
+
+void CellPanel::replaceRobotFromDialog() {
+  const QString urdf = QFileDialog::getOpenFileName(this, tr("The robot's URDF (its meshes found through relative paths "
+                                                             "or package:// folders around it)"),
+                                                    {}, tr("URDF files (*.urdf *.URDF)"));
+  if (urdf.isEmpty()) return;
+  // The SRDF (groups, gripper, collision pairs to skip) of the same name beside it, else asked for.
+  const QFileInfo info(urdf);
+  QString srdf = info.absolutePath() + QLatin1Char('/') + info.completeBaseName() + QStringLiteral(".srdf");
+  if (!QFileInfo::exists(srdf))
+    srdf = QFileDialog::getOpenFileName(this, tr("The SRDF of %1 (its gripper and the link pairs that never collide)")
+                                                  .arg(info.fileName()),
+                                        info.absolutePath(), tr("SRDF files (*.srdf *.SRDF)"));
+  if (!srdf.isEmpty()) replaceRobot({}, urdf, srdf);
 }
 
 bool CellPanel::removeSelected() {

@@ -2,7 +2,7 @@
 // The cell editor: the robot, the furniture and the parts of a project on a cell file, each
 // placed by typing millimetres and degrees; parts added from mesh files (put down on a free spot
 // of a support), furniture as a box, a cylinder or a mesh file; a part's handles listed, one
-// deleted or all generated again; ArUco markers stuck on a part by clicking its face in the 3D
+// deleted or all generated again; the robot replaced by a bundled one or a URDF + SRDF from disk; ArUco markers stuck on a part by clicking its face in the 3D
 // view (Stick Markers), listed, deleted. Every change is one undo step and is written to the cell file
 // at once (Document::editCell); a bundled example is first saved under the user's own name.
 #include <QWidget>
@@ -39,6 +39,9 @@ public:
   // `file`: the mesh (Kind::Mesh) or the URDF (Kind::Urdf, its SRDF the NAME.srdf beside it).
   bool addFurniture(CellFurniture::Kind kind, const QString& file = {}, double scale = 1.0);
   bool removeSelected();
+  // The cell's robot replaced by a bundled one (`bundled`), or by the robot of `urdf` and `srdf`
+  // from disk when `bundled` is empty; the parts' generated handles follow the new gripper.
+  bool replaceRobot(const QString& bundled, const QString& urdf = {}, const QString& srdf = {});
   bool deleteHandle(int part, int handle);
   bool regenerateHandles(int part);
   // A marker stuck on `part` (cell index) at `point` on the face with outward `normal` (part
@@ -65,6 +68,7 @@ private:
   void saveCellAs();
   void addPartFromDialog();
   void addMeshFurnitureFromDialog();
+  void replaceRobotFromDialog();
   // A mesh file from a file dialog and the unit scale guessed for it; "" when none (an unreadable
   // file is reported in the panel).
   QString chooseMesh(const QString& title, double* unit_scale);
