@@ -122,15 +122,39 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
   th.rest_r = std::max(o.rest_rotation, o.noise_factor * sigma_r);
   th.move_t = std::max(o.move_translation, 2.5 * th.rest_t);
   th.move_r = std::max(o.move_rotation, 2.5 * th.rest_r);
-  // A sample's own expected precision widens both thresholds (small or far markers).
-  auto still = [&](const PoseSample& p, const Pose& ref, double scale = 1.0) {
-    return (p.pose.translation() - ref.translation()).norm() <=
-               scale * std::max(th.rest_t, o.sigma_factor * p.sigma_translation) &&
-           angle_between(p.pose, ref) <= scale * std::max(th.rest_r, o.sigma_factor * p.sigma_rotation);
+  // A sample less precise than the track's usual (fewer, smaller or farther markers) widens both
+  // thresholds by as much: its expected precision is taken relative to the track's median. As it
+  // is, it is an absolute accuracy (one 30 mm marker 2 m away: 17 mm along the line of sight),
+  // and a resting part seen through the same markers keeps the same error from frame to frame,
+  // so only the measured jitter counts then. Seen through other markers than the reference was,
+  // the estimate may jump by that accuracy, so it counts too.
+  auto median_positive = [&](auto field) {
+    std::vector<double> v;
+    for (int f : frames)
+      if (samples[f].*field > 0) v.push_back(samples[f].*field);
+    return median(v);
   };
-  auto beyond = [&](const PoseSample& p, const Pose& ref) {
-    return (p.pose.translation() - ref.translation()).norm() > std::max(th.move_t, 2.5 * o.sigma_factor * p.sigma_translation) ||
-           angle_between(p.pose, ref) > std::max(th.move_r, 2.5 * o.sigma_factor * p.sigma_rotation);
+  const double usual_t = median_positive(&PoseSample::sigma_translation);
+  const double usual_r = median_positive(&PoseSample::sigma_rotation);
+  auto widening_t = [&](const PoseSample& p) { return usual_t > 0 ? std::max(1.0, p.sigma_translation / usual_t) : 1.0; };
+  auto widening_r = [&](const PoseSample& p) { return usual_r > 0 ? std::max(1.0, p.sigma_rotation / usual_r) : 1.0; };
+  // Whether `p` is off `ref` by more than `limit_t` and `limit_r` (scaled as above), in
+  // translation or rotation. `same_view`: `ref` comes from samples of the same markers fitting
+  // as well as `p` (not partly hidden since), whose error `p` shares.
+  auto off = [&](const PoseSample& p, const Pose& ref, bool same_view, double limit_t, double limit_r, double sigmas) {
+    const double tol_t = std::max(limit_t * widening_t(p), same_view ? 0.0 : sigmas * p.sigma_translation);
+    const double tol_r = std::max(limit_r * widening_r(p), same_view ? 0.0 : sigmas * p.sigma_rotation);
+    return (p.pose.translation() - ref.translation()).norm() > tol_t || angle_between(p.pose, ref) > tol_r;
+  };
+  auto still = [&](const PoseSample& p, const Pose& ref, bool same_view, double scale = 1.0) {
+    return !off(p, ref, same_view, scale * th.rest_t, scale * th.rest_r, scale * o.sigma_factor);
+  };
+  auto beyond = [&](const PoseSample& p, const Pose& ref, bool same_view) {
+    return off(p, ref, same_view, th.move_t, th.move_r, 2.5 * o.sigma_factor);
+  };
+  auto same_view = [](const PoseSample& a, const PoseSample& b) {
+    return a.marker_set != 0 && a.marker_set == b.marker_set &&
+           std::abs(a.reprojection_px - b.reprojection_px) <= 0.1 + 0.5 * std::max(a.reprojection_px, b.reprojection_px);
   };
 
   const int n = static_cast<int>(frames.size());
@@ -145,7 +169,7 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     for (int k = a; k < b; ++k) {
       fm += frames[moving[k]];
       pm += at(moving[k]).pose.translation();
-      sigma = std::max(sigma, at(moving[k]).sigma_translation);
+      sigma = std::max(sigma, sigma_t * widening_t(at(moving[k])));
     }
     fm /= (b - a);
     pm /= (b - a);
@@ -162,8 +186,15 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
   Pose ref = at(0).pose, start_ref = ref;
   bool in_motion = false;
   int run = 0;
+  int first_beyond = 0;  // index in `moving` of the first sample beyond the rest
   MotionInterval cur;
   cur.object = object;
+  int first_moving = 0;  // first frame the current motion was seen moving
+  // Last seen at rest, next seen moving: it was picked up while hidden, in the gap.
+  auto place_hidden_grasp = [&] {
+    const int gap = first_moving - cur.start;
+    if (gap > 1) cur.start = first_moving - static_cast<int>(std::lround(o.hidden_event_fraction * gap));
+  };
   auto rest_centre = [&]() {
     std::vector<const PoseSample*> tail;
     for (size_t k = rest.size() > 30 ? rest.size() - 30 : 0; k < rest.size(); ++k) tail.push_back(&at(rest[k]));
@@ -172,7 +203,14 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
   for (int i = 1; i < n; ++i) {
     const PoseSample& p = at(i);
     if (!in_motion) {
-      if (still(p, ref)) {
+      // The rest pose as the sample's own markers saw it, when they did twice or more: their
+      // error is the same, so only the jitter tells them apart. Else the rest pose of all.
+      std::vector<const PoseSample*> same;
+      for (size_t k = rest.size() > 30 ? rest.size() - 30 : 0; k < rest.size(); ++k)
+        if (same_view(at(rest[k]), p)) same.push_back(&at(rest[k]));
+      const bool seen_alike = same.size() >= 2;
+      const Pose seen_ref = seen_alike ? centre_of(same) : ref;
+      if (still(p, seen_ref, seen_alike)) {
         rest.push_back(i);
         moving.clear();
         run = 0;
@@ -180,7 +218,7 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
         continue;
       }
       moving.push_back(i);
-      if (beyond(p, ref)) ++run;
+      if (beyond(p, seen_ref, seen_alike) && run++ == 0) first_beyond = static_cast<int>(moving.size()) - 1;
       if (run < o.min_moving_frames) {
         // Samples that settle a little off the rest pose (it was estimated from few or poor
         // samples) make the rest pose anew.
@@ -190,10 +228,10 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
           for (int k = m - o.min_rest_frames; k < m; ++k) window.push_back(&at(moving[k]));
           const Pose centre = centre_of(window);
           bool settled = true;
-          for (const auto* w : window) settled = settled && still(*w, centre);
+          for (const auto* w : window) settled = settled && still(*w, centre, same_view(*w, *window.back()));
           PoseSample c;
           c.pose = centre;
-          if (settled && !beyond(c, ref)) {
+          if (settled && !beyond(c, ref, false)) {
             rest.assign(moving.end() - o.min_rest_frames, moving.end());
             ref = rest_centre();
             moving.clear();
@@ -204,10 +242,28 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
       }
       in_motion = true;
       start_ref = ref;
-      const int last_rest = rest.back();
+      int last_rest = rest.back();
+      // Samples that sat still among themselves right before the first one beyond the rest are
+      // the rest's last frames, seen through other or partly hidden markers (the hand arriving).
+      const int before = first_beyond;
+      if (before >= o.min_rest_frames) {
+        std::vector<const PoseSample*> window;
+        for (int k = before - o.min_rest_frames; k < before; ++k) window.push_back(&at(moving[k]));
+        const Pose centre = centre_of(window);
+        bool plateau = true;
+        for (const auto* w : window) plateau = plateau && still(*w, centre, same_view(*w, *window.back()));
+        if (plateau) last_rest = moving[before - 1];
+      }
       cur.start = frames[last_rest];
       // A part hidden just before it moved: its grasp frame is uncertain.
       const int gap = frames[moving.front()] - frames[last_rest];
+      // The first frame of two seen moving in a row (a lone glimpse does not end the gap).
+      first_moving = frames[moving.front()];
+      for (size_t k = 0; k + 1 < moving.size(); ++k)
+        if (frames[moving[k + 1]] - frames[moving[k]] == 1) {
+          first_moving = frames[moving[k]];
+          break;
+        }
       cur.start_confidence = at(last_rest).confidence * std::exp(-(gap - 1) / 10.0);
       cur.distance = 0;
       for (int k : moving) cur.distance = std::max(cur.distance, (at(k).pose.translation() - start_ref.translation()).norm());
@@ -221,14 +277,25 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     for (int k = m - o.min_rest_frames; k < m; ++k) window.push_back(&at(moving[k]));
     const Pose centre = centre_of(window);
     bool settled = !drifting(m - o.min_rest_frames, m);
-    for (const auto* w : window) settled = settled && still(*w, centre);
+    for (const auto* w : window) settled = settled && still(*w, centre, same_view(*w, *window.back()));
     if (!settled) continue;
     // At rest again: it came to rest at the earliest sample that is still at the new pose
     // (closer than for staying at rest: the last slow approach is not rest yet).
     int j = m - o.min_rest_frames;
-    while (j > 0 && still(at(moving[j - 1]), centre, 0.6)) --j;
+    while (j > 0 && still(at(moving[j - 1]), centre, same_view(at(moving[j - 1]), *window.back()), 0.6)) --j;
     cur.end = frames[moving[j]];
     const int gap = j > 0 ? frames[moving[j]] - frames[moving[j - 1]] : 1;
+    // Last seen moving, next seen at rest: it was set down while hidden, in the gap. Lone
+    // glimpses inside the gap (a marker corner between the fingers) do not end it: it runs from
+    // the last frame of two seen in a row. (A carry hidden from end to end, j = 0, keeps the
+    // frames it was last and first seen at rest.)
+    if (j > 0) {
+      int k = j - 1;
+      while (k > 0 && frames[moving[k]] - frames[moving[k - 1]] > 1) --k;
+      const int hidden = frames[moving[j]] - frames[moving[k]];
+      if (hidden > 1) cur.end = frames[moving[k]] + static_cast<int>(std::lround(o.hidden_event_fraction * hidden));
+      place_hidden_grasp();
+    }
     cur.end_confidence = at(moving[j]).confidence * std::exp(-(gap - 1) / 10.0);
     const bool displaced = (centre.translation() - start_ref.translation()).norm() > th.move_t ||
                            angle_between(centre, start_ref) > th.move_r;
@@ -242,6 +309,7 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     run = 0;
     in_motion = false;
   }
+  if (in_motion) place_hidden_grasp();
   if (in_motion && frames.back() - cur.start >= o.min_carry_frames) {
     cur.end = frames.back();  // still moving at the end of the video: it rests at its last sample
     cur.end_confidence = 0.3;

@@ -176,6 +176,7 @@ std::vector<PoseObservation> MarkerTracker::add_frame(int frame, const std::vect
     Observation obs;
     obs.frame = frame;
     obs.markers = static_cast<int>(in.size());
+    for (size_t k : in) obs.marker_set |= std::uint64_t{1} << (seen[o][k].second->id % 64);
     obs.refined = std::all_of(in.begin(), in.end(), [&](size_t k) { return seen[o][k].first->edges_refined; });
     const auto [sigma_t, sigma_r] = pose_sigmas(obj, best, camera_, options_.corner_sigma_px);
     obs.alternatives.push_back({best, best_err, sigma_t, sigma_r});
@@ -207,6 +208,7 @@ PoseSample MarkerTracker::sample_of(const Observation& obs, size_t alternative, 
   s.valid = true;
   s.pose = *camera_.world_T_camera * a.camera_T_object;
   s.markers = obs.markers;
+  s.marker_set = obs.marker_set;
   s.reprojection_px = a.reprojection_px;
   s.sigma_translation = a.sigma_translation;
   s.sigma_rotation = a.sigma_rotation;

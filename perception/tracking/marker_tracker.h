@@ -49,6 +49,7 @@ private:
     int frame = -1;
     std::vector<Alternative> alternatives;  // best first; two when ambiguous
     int markers = 0;
+    std::uint64_t marker_set = 0;  // PoseSample::marker_set
     bool refined = false;  // every marker used had its edges measured
   };
 

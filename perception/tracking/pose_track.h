@@ -1,6 +1,7 @@
 #pragma once
 // Per-frame pose estimates of every tracked part: what the event detector reads and what the
 // UI draws under the video.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct PoseSample {
   // computed from); 0 when unknown.
   double sigma_translation = 0.0;  // m, along the worst direction
   double sigma_rotation = 0.0;     // rad
+  // Which markers it was computed from (bit id % 64 of each; 0: unknown or not from markers).
+  // Estimates from the same markers share their error while the part rests; from other
+  // markers they may differ by up to the expected precision above.
+  std::uint64_t marker_set = 0;
 };
 
 // One part's estimate in one frame, as a tracker reports it.

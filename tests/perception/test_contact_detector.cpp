@@ -1,5 +1,5 @@
 // Grasp/release detection from pose tracks: timing, hysteresis against jitter, occlusion while
-// carried, parts riding together on a tray, outliers, and the Demonstration it gives.
+// carried, events hidden by the hand, one far marker's steady error, parts riding together on a tray, outliers, and the Demonstration it gives.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -99,6 +99,55 @@ TEST(ContactDetector, PartHiddenWhileCarried) {
   ASSERT_EQ(b.carries.size(), 1u);
   EXPECT_EQ(b.carries[0].start, 17);
   EXPECT_EQ(b.carries[0].end, 63);
+}
+
+TEST(ContactDetector, EventsHiddenByTheHandLieInsideTheGap) {
+  PoseTracks t = make_tracks(100, {at(0, 0, 0.8)}, {{0, 20, 60, at(0.5, 0.2, 0.8)}});
+  // Set down under the hand: last seen moving at 49, seen at rest from 66 on; a lone glimpse
+  // at 58 (a marker corner between the fingers, its pose off) does not end the gap.
+  for (int f = 50; f < 66; ++f) t.samples[0][f].valid = false;
+  t.samples[0][58].valid = true;
+  t.samples[0][58].pose = at(0.45, 0.25, 0.85);
+  ContactAnalysis a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_EQ(a.carries[0].start, 20);
+  EXPECT_EQ(a.carries[0].end, 49 + 11);  // 0.62 of the 17 frames from last seen moving to seen at rest
+  // Picked up under the hand: last seen at rest at 14, seen moving from 27 on.
+  for (int f = 15; f < 27; ++f) t.samples[0][f].valid = false;
+  a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_EQ(a.carries[0].start, 27 - 8);  // 0.62 of the 13 frames hidden before it was seen moving
+}
+
+TEST(ContactDetector, OneFarMarkerIsPreciseFromFrameToFrame) {
+  // One small marker far away: 17 mm expected error along the line of sight, but the same
+  // error in every frame while the part rests. The grasp and release are where it moves.
+  PoseTracks t = make_tracks(120, {at(0, 0, 0.8)}, {{0, 40, 80, at(0.4, 0.1, 0.8)}});
+  for (auto& s : t.samples[0]) {
+    s.markers = 1;
+    s.marker_set = 1u << 7;
+    s.reprojection_px = 0.04;
+    s.sigma_translation = 0.017;
+    s.sigma_rotation = 0.023;
+  }
+  const ContactAnalysis a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_NEAR(a.carries[0].start, 40, 1);
+  EXPECT_NEAR(a.carries[0].end, 80, 2);
+  // Seen through another marker for a while, the estimate jumps by 10 mm: no event.
+  PoseTracks b = make_tracks(120, {at(0, 0, 0.8)}, {});
+  for (int f = 0; f < 120; ++f) {
+    PoseSample& s = b.samples[0][f];
+    s.markers = 1;
+    s.reprojection_px = 0.04;
+    s.sigma_translation = 0.012;
+    s.sigma_rotation = 0.02;
+    const bool other = f >= 50 && f < 70;
+    s.marker_set = other ? 1u << 3 : 1u << 7;
+    if (other) s.pose.translation().z() += 0.010;
+  }
+  const ContactAnalysis c = detect_contacts(b);
+  EXPECT_TRUE(c.carries.empty());
 }
 
 TEST(ContactDetector, PartsRidingOnATrayMakeNoEvents) {
