@@ -22,6 +22,13 @@ std::optional<MarkerBoard> place_board(const DemoScript& s, const Pose& table_to
       if (b.min().z() > 0.5) continue;
       busy.emplace_back(b.min().head<2>() - Eigen::Vector2d::Constant(0.04), b.max().head<2>() + Eigen::Vector2d::Constant(0.04));
     }
+  // Furniture standing on the top (a fixture, a shelf on a table): the board does not go under it.
+  for (const auto& box : obstacles) {
+    Eigen::AlignedBox3d b;
+    for (int c = 0; c < 8; ++c) b.extend(top_T_world * box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
+    if (b.max().z() > 0.005 && b.min().z() < 0.5)
+      busy.emplace_back(b.min().head<2>() - Eigen::Vector2d::Constant(0.02), b.max().head<2>() + Eigen::Vector2d::Constant(0.02));
+  }
   for (const auto& h : s.hand) {
     const Eigen::Vector3d p = top_T_world * h.translation();
     if (p.z() < 0.5) busy.emplace_back(p.head<2>() - Eigen::Vector2d::Constant(0.12), p.head<2>() + Eigen::Vector2d::Constant(0.12));

@@ -1,6 +1,7 @@
 #pragma once
 // A free spot on the table top for the ArUco board that gives the camera's extrinsics: inside
-// the top, clear of every place a part rests or passes, seen large by the camera.
+// the top, clear of every place a part rests or passes and of furniture standing on it, seen
+// large by the camera.
 #include <optional>
 
 #include <Eigen/Geometry>

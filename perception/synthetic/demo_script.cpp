@@ -77,9 +77,12 @@ Pose hand_on(const Eigen::AlignedBox3d& bounds, const Pose& pose, const Eigen::V
   return H;
 }
 
+// Where the hand waits before its first grasp and after its last release: up and to the side,
+// across the camera's line of sight (the palm's y is horizontal and square to it), so that it
+// does not hang between the camera and the part it just put down.
 Pose raised_away(const Pose& H) {
   Pose out = H;
-  out.translation() += -H.linear().col(2) * 0.25 + Eigen::Vector3d(0, 0, 0.3);
+  out.translation() += H.linear().col(1) * 0.35 + Eigen::Vector3d(0, 0, 0.35);
   return out;
 }
 

@@ -409,7 +409,9 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
   const Assets assets = scene_assets(scene);
   std::vector<Eigen::AlignedBox3d> bounds;
   for (const auto& p : assets.parts) bounds.push_back(p.bounds().cast<double>());
-  DemoScript script = make_demo_script(truth, start.objects, bounds, scaled(30));
+  // Two seconds after the last release, as a recording that stops once the demonstrator is done:
+  // the hand pulls away (26 frames) and the parts are seen at rest.
+  DemoScript script = make_demo_script(truth, start.objects, bounds, scaled(60));
 
   MarkerIds ids;
   std::vector<MarkedObject> marked = cell_part_markers(cell, object_ids(scene), bounds, &ids);
@@ -422,9 +424,12 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
   if (ro.board) {
     // The board's ids must not be read as a part's when both use the same dictionary.
     const MarkerBoard board = extrinsics_board(cell.marker_dictionary == kDictionary ? ids.take(6) : 90);
-    // On the first top with a free spot the camera sees, else on a free floor tile near the
-    // camera (tiles under furniture are left out: the obstacle test does not see into a box).
-    auto tops = assets.board_tops;
+    // On the first top with a free spot the camera sees; else on a top where the hand passes
+    // later (extract reads the board from the first frames that show it: the first second is
+    // kept clear); else on a free floor tile near the camera (tiles under furniture are left out:
+    // the obstacle test does not see into a box), where it is seen small and the camera's pose
+    // comes out worse.
+    const auto tops = assets.board_tops;
     std::vector<std::pair<double, Pose>> tiles;
     const double tile = 0.5;
     const Eigen::Vector3d eye = camera.world_T_camera->translation();
@@ -440,15 +445,17 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
         if (free) tiles.push_back({(c - eye.head<2>()).norm(), floor});
       }
     std::sort(tiles.begin(), tiles.end(), [](auto& a, auto& b) { return a.first < b.first; });
-    for (const auto& t : tiles) tops.push_back({t.second, Eigen::Vector2d(tile, tile)});
+    DemoScript first_second = script;
+    first_second.hand.resize(std::min(first_second.hand.size(), static_cast<size_t>(std::lround(script.fps))));
     for (const auto& [top, size] : tops)
-      if ((camera.board = place_board(script, top, size, camera, assets.obstacles, board))) break;
-    // Else where the hand passes over it: the board is seen in the frames before the hand comes
-    // (extract reads it from the first frames that show it).
-    DemoScript parts_only = script;
-    parts_only.hand.clear();
-    for (size_t k = 0; k < tops.size() && !camera.board; ++k)
-      camera.board = place_board(parts_only, tops[k].first, tops[k].second, camera, assets.obstacles, board);
+      if (!camera.board) camera.board = place_board(script, top, size, camera, assets.obstacles, board);
+    for (const auto& [top, size] : tops)
+      if (!camera.board) camera.board = place_board(first_second, top, size, camera, assets.obstacles, board);
+    for (const auto& t : tiles)
+      if (!camera.board) camera.board = place_board(script, t.second, Eigen::Vector2d(tile, tile), camera, assets.obstacles, board);
+    first_second.hand.clear();  // last: wherever the parts leave room, the hand's coming in hides it
+    for (const auto& [top, size] : tops)
+      if (!camera.board) camera.board = place_board(first_second, top, size, camera, assets.obstacles, board);
   }
 
   MarkerScene markers;
