@@ -22,6 +22,7 @@ Camera place_camera(const DemoScript& s, const std::vector<Eigen::AlignedBox3d>&
     for (size_t k = 0; k < s.object_ids.size(); ++k)
       for (int c = 0; c < 8; ++c)
         points.push_back(s.poses[f][k] * s.bounds[k].corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
+  points.insert(points.end(), o.also_in_view.begin(), o.also_in_view.end());
   std::vector<int> rest_frames{0};
   for (const auto& c : s.carries) rest_frames.push_back(c.release);
   // Where each resting part's markers are: centre and normal in the world.

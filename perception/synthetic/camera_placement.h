@@ -18,6 +18,7 @@ struct CameraPlacementOptions {
   std::vector<double> elevations{0.45, 0.6, 0.75, 0.9};  // rad above the horizontal, tried in turn
   double margin_px = 60.0;       // keep the motion this far inside the image border
   int azimuths = 24;
+  std::vector<Eigen::Vector3d> also_in_view;  // world points kept in the image besides the motion
 };
 
 // Whether the segment from a to b (its last 5 cm excluded) crosses the box.

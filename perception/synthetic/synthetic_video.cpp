@@ -424,12 +424,38 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
   if (ro.board) {
     // The board's ids must not be read as a part's when both use the same dictionary.
     const MarkerBoard board = extrinsics_board(cell.marker_dictionary == kDictionary ? ids.take(6) : 90);
-    // On the first top with a free spot the camera sees; else on a top where the hand passes
-    // later (extract reads the board from the first frames that show it: the first second is
-    // kept clear); else on a free floor tile near the camera (tiles under furniture are left out:
-    // the obstacle test does not see into a box), where it is seen small and the camera's pose
-    // comes out worse.
-    const auto tops = assets.board_tops;
+    // On a top with a free spot the camera sees; else on a top where the hand and the carried
+    // parts pass later (extract reads the board from the first frames that show it: the first
+    // second is kept clear, and where parts rest); else the same with the camera drawn back to
+    // see the largest top whole, as a person sets up a camera over the table; else on a free
+    // floor tile near the camera (tiles under furniture are left out: the obstacle test does not
+    // see into a box), where it is seen small and the camera's pose comes out worse.
+    const auto& tops = assets.board_tops;
+    auto on_a_top = [&](const DemoScript& s, const Camera& cam) -> std::optional<MarkerBoard> {
+      DemoScript first_second = s;
+      first_second.hand.resize(std::min(first_second.hand.size(), static_cast<size_t>(std::lround(s.fps))));
+      for (const auto& c : s.carries)  // where the parts rest, not where they pass later
+        for (int f = c.grasp + 1; f < c.release; ++f) first_second.poses[f][c.object] = s.poses[c.grasp][c.object];
+      for (const DemoScript* variant : {&s, static_cast<const DemoScript*>(&first_second)})
+        for (const auto& [top, size] : tops)
+          if (auto b = place_board(*variant, top, size, cam, assets.obstacles, board)) return b;
+      return std::nullopt;
+    };
+    camera.board = on_a_top(script, camera);
+    if (!camera.board && !tops.empty()) {
+      CameraPlacementOptions wider;
+      const auto& [top, size] = tops.front();
+      for (int c = 0; c < 4; ++c)
+        wider.also_in_view.push_back(top * Eigen::Vector3d((c & 1 ? 0.5 : -0.5) * size.x(), (c & 2 ? 0.5 : -0.5) * size.y(), 0.0));
+      Camera back = place_camera(script, assets.obstacles, part_markers, wider);
+      DemoScript with_hand = script;
+      add_hand(with_hand, back.world_T_camera->translation());
+      if (auto b = on_a_top(with_hand, back)) {
+        camera = back;
+        camera.board = b;
+        script = std::move(with_hand);
+      }
+    }
     std::vector<std::pair<double, Pose>> tiles;
     const double tile = 0.5;
     const Eigen::Vector3d eye = camera.world_T_camera->translation();
@@ -445,17 +471,12 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
         if (free) tiles.push_back({(c - eye.head<2>()).norm(), floor});
       }
     std::sort(tiles.begin(), tiles.end(), [](auto& a, auto& b) { return a.first < b.first; });
-    DemoScript first_second = script;
-    first_second.hand.resize(std::min(first_second.hand.size(), static_cast<size_t>(std::lround(script.fps))));
-    for (const auto& [top, size] : tops)
-      if (!camera.board) camera.board = place_board(script, top, size, camera, assets.obstacles, board);
-    for (const auto& [top, size] : tops)
-      if (!camera.board) camera.board = place_board(first_second, top, size, camera, assets.obstacles, board);
     for (const auto& t : tiles)
       if (!camera.board) camera.board = place_board(script, t.second, Eigen::Vector2d(tile, tile), camera, assets.obstacles, board);
-    first_second.hand.clear();  // last: wherever the parts leave room, the hand's coming in hides it
+    DemoScript parts_only = script;  // last: wherever the parts leave room, the hand's coming in hides it
+    parts_only.hand.clear();
     for (const auto& [top, size] : tops)
-      if (!camera.board) camera.board = place_board(first_second, top, size, camera, assets.obstacles, board);
+      if (!camera.board) camera.board = place_board(parts_only, top, size, camera, assets.obstacles, board);
   }
 
   MarkerScene markers;
