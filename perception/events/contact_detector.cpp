@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 #include "core/demo/rest_pose.h"
 
@@ -200,6 +201,15 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     for (size_t k = rest.size() > 30 ? rest.size() - 30 : 0; k < rest.size(); ++k) tail.push_back(&at(rest[k]));
     return centre_of(tail);
   };
+  // The centre of moving[end - min_rest_frames, end) when those samples sit still about it.
+  auto still_window = [&](int end) -> std::optional<Pose> {
+    std::vector<const PoseSample*> window;
+    for (int k = end - o.min_rest_frames; k < end; ++k) window.push_back(&at(moving[k]));
+    const Pose centre = centre_of(window);
+    for (const auto* w : window)
+      if (!still(*w, centre, same_view(*w, *window.back()))) return std::nullopt;
+    return centre;
+  };
   for (int i = 1; i < n; ++i) {
     const PoseSample& p = at(i);
     if (!in_motion) {
@@ -224,14 +234,10 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
         // samples) make the rest pose anew.
         const int m = static_cast<int>(moving.size());
         if (m >= o.min_rest_frames) {
-          std::vector<const PoseSample*> window;
-          for (int k = m - o.min_rest_frames; k < m; ++k) window.push_back(&at(moving[k]));
-          const Pose centre = centre_of(window);
-          bool settled = true;
-          for (const auto* w : window) settled = settled && still(*w, centre, same_view(*w, *window.back()));
           PoseSample c;
-          c.pose = centre;
-          if (settled && !beyond(c, ref, false)) {
+          const std::optional<Pose> centre = still_window(m);
+          if (centre) c.pose = *centre;
+          if (centre && !beyond(c, ref, false)) {
             rest.assign(moving.end() - o.min_rest_frames, moving.end());
             ref = rest_centre();
             moving.clear();
@@ -245,15 +251,7 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
       int last_rest = rest.back();
       // Samples that sat still among themselves right before the first one beyond the rest are
       // the rest's last frames, seen through other or partly hidden markers (the hand arriving).
-      const int before = first_beyond;
-      if (before >= o.min_rest_frames) {
-        std::vector<const PoseSample*> window;
-        for (int k = before - o.min_rest_frames; k < before; ++k) window.push_back(&at(moving[k]));
-        const Pose centre = centre_of(window);
-        bool plateau = true;
-        for (const auto* w : window) plateau = plateau && still(*w, centre, same_view(*w, *window.back()));
-        if (plateau) last_rest = moving[before - 1];
-      }
+      if (first_beyond >= o.min_rest_frames && still_window(first_beyond)) last_rest = moving[first_beyond - 1];
       cur.start = frames[last_rest];
       // A part hidden just before it moved: its grasp frame is uncertain.
       const int gap = frames[moving.front()] - frames[last_rest];
@@ -273,16 +271,14 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     cur.distance = std::max(cur.distance, (p.pose.translation() - start_ref.translation()).norm());
     const int m = static_cast<int>(moving.size());
     if (m < o.min_rest_frames) continue;
-    std::vector<const PoseSample*> window;
-    for (int k = m - o.min_rest_frames; k < m; ++k) window.push_back(&at(moving[k]));
-    const Pose centre = centre_of(window);
-    bool settled = !drifting(m - o.min_rest_frames, m);
-    for (const auto* w : window) settled = settled && still(*w, centre, same_view(*w, *window.back()));
+    const std::optional<Pose> settled = drifting(m - o.min_rest_frames, m) ? std::nullopt : still_window(m);
     if (!settled) continue;
+    const Pose centre = *settled;
     // At rest again: it came to rest at the earliest sample that is still at the new pose
     // (closer than for staying at rest: the last slow approach is not rest yet).
     int j = m - o.min_rest_frames;
-    while (j > 0 && still(at(moving[j - 1]), centre, same_view(at(moving[j - 1]), *window.back()), 0.6)) --j;
+    const PoseSample& last = at(moving[m - 1]);
+    while (j > 0 && still(at(moving[j - 1]), centre, same_view(at(moving[j - 1]), last), 0.6)) --j;
     cur.end = frames[moving[j]];
     const int gap = j > 0 ? frames[moving[j]] - frames[moving[j - 1]] : 1;
     // Last seen moving, next seen at rest: it was set down while hidden, in the gap. Lone
