@@ -123,8 +123,9 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
   th.rest_r = std::max(o.rest_rotation, o.noise_factor * sigma_r);
   th.move_t = std::max(o.move_translation, 2.5 * th.rest_t);
   th.move_r = std::max(o.move_rotation, 2.5 * th.rest_r);
-  // A sample less precise than the track's usual (fewer, smaller or farther markers) widens both
-  // thresholds by as much: its expected precision is taken relative to the track's median. As it
+  // A sample less precise than the track's usual (fewer, smaller or farther markers) widens the
+  // jitter's share of both thresholds by as much: its expected precision relative to the track's
+  // median (the floors stay). As it
   // is, it is an absolute accuracy (one 30 mm marker 2 m away: 17 mm along the line of sight),
   // and a resting part seen through the same markers keeps the same error from frame to frame,
   // so only the measured jitter counts then. Seen through other markers than the reference was,
@@ -139,19 +140,20 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
   const double usual_r = median_positive(&PoseSample::sigma_rotation);
   auto widening_t = [&](const PoseSample& p) { return usual_t > 0 ? std::max(1.0, p.sigma_translation / usual_t) : 1.0; };
   auto widening_r = [&](const PoseSample& p) { return usual_r > 0 ? std::max(1.0, p.sigma_rotation / usual_r) : 1.0; };
-  // Whether `p` is off `ref` by more than `limit_t` and `limit_r` (scaled as above), in
-  // translation or rotation. `same_view`: `ref` comes from samples of the same markers fitting
-  // as well as `p` (not partly hidden since), whose error `p` shares.
-  auto off = [&](const PoseSample& p, const Pose& ref, bool same_view, double limit_t, double limit_r, double sigmas) {
-    const double tol_t = std::max(limit_t * widening_t(p), same_view ? 0.0 : sigmas * p.sigma_translation);
-    const double tol_r = std::max(limit_r * widening_r(p), same_view ? 0.0 : sigmas * p.sigma_rotation);
+  // Whether `p` is off `ref` by more than `floor_t` / `floor_r`, `jitters` times the measured
+  // jitter widened for `p`, and, unless `same_view` (`ref` comes from samples of the same markers
+  // fitting as well as `p`, whose error `p` shares), `sigmas` times its expected precision.
+  auto off = [&](const PoseSample& p, const Pose& ref, bool same_view, double floor_t, double floor_r, double jitters,
+                 double sigmas) {
+    const double tol_t = std::max({floor_t, jitters * sigma_t * widening_t(p), same_view ? 0.0 : sigmas * p.sigma_translation});
+    const double tol_r = std::max({floor_r, jitters * sigma_r * widening_r(p), same_view ? 0.0 : sigmas * p.sigma_rotation});
     return (p.pose.translation() - ref.translation()).norm() > tol_t || angle_between(p.pose, ref) > tol_r;
   };
   auto still = [&](const PoseSample& p, const Pose& ref, bool same_view, double scale = 1.0) {
-    return !off(p, ref, same_view, scale * th.rest_t, scale * th.rest_r, scale * o.sigma_factor);
+    return !off(p, ref, same_view, scale * th.rest_t, scale * th.rest_r, scale * o.noise_factor, scale * o.sigma_factor);
   };
   auto beyond = [&](const PoseSample& p, const Pose& ref, bool same_view) {
-    return off(p, ref, same_view, th.move_t, th.move_r, 2.5 * o.sigma_factor);
+    return off(p, ref, same_view, th.move_t, th.move_r, 2.5 * o.noise_factor, 2.5 * o.sigma_factor);
   };
   auto same_view = [](const PoseSample& a, const PoseSample& b) {
     return a.marker_set != 0 && a.marker_set == b.marker_set &&
