@@ -311,6 +311,7 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
   if (in_motion && frames.back() - cur.start >= o.min_carry_frames) {
     cur.end = frames.back();  // still moving at the end of the video: it rests at its last sample
     cur.end_confidence = 0.3;
+    cur.seen_at_rest_after = false;
     out.push_back(cur);
   }
   return out;

@@ -56,6 +56,11 @@ Demonstration build_demonstration(const PoseTracks& tracks, const ContactAnalysi
     return static_cast<int>(std::find(rows.begin(), rows.end(), row) - rows.begin());
   };
   for (const auto& c : contacts.carries) {
+    if (!c.seen_at_rest_after && warnings)
+      warnings->push_back(tracks.object_ids[c.object] + " at frames " + std::to_string(c.start) + "-" + std::to_string(c.end) +
+                          ": carried and never seen at rest after (hidden or still moving when the video ends); its "
+                          "release is put where it was last seen, frame " + std::to_string(c.end) +
+                          ": check that pose before planning");
     d.events.push_back({c.start, planning_index(c.object), EventType::Grasp, std::clamp(c.start_confidence, 0.0, 1.0), {}, {}});
     d.events.push_back({c.end, planning_index(c.object), EventType::Release, std::clamp(c.end_confidence, 0.0, 1.0), {}, {}});
   }

@@ -22,7 +22,7 @@ std::optional<Pose> rest_pose(const std::vector<PoseSample>& samples, int first,
                               const ContactDetectorOptions& options = {});
 
 // `warnings` receives one line per part pose that had to be guessed (a part never seen at
-// rest around an event).
+// rest around an event, a carry never seen to end).
 Demonstration build_demonstration(const PoseTracks& tracks, const ContactAnalysis& contacts, const std::string& task,
                                   const ContactDetectorOptions& options = {},
                                   std::vector<std::string>* warnings = nullptr);

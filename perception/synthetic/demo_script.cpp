@@ -77,10 +77,17 @@ Pose hand_on(const Eigen::AlignedBox3d& bounds, const Pose& pose, const Eigen::V
   return H;
 }
 
-// Where the hand waits before its first grasp and after its last release: up and to the side,
-// across the camera's line of sight (the palm's y is horizontal and square to it), so that it
-// does not hang between the camera and the part it just put down.
+// Where the hand waits before its first grasp: behind the part as the camera sees it, and up.
 Pose raised_away(const Pose& H) {
+  Pose out = H;
+  out.translation() += -H.linear().col(2) * 0.25 + Eigen::Vector3d(0, 0, 0.3);
+  return out;
+}
+
+// Where it waits after its last release: up and to the side, across the camera's line of sight
+// (the palm's y is horizontal and square to it). Behind and up it hung between the camera and
+// the part it had just put down, hiding that part to the end of the video.
+Pose raised_aside(const Pose& H) {
   Pose out = H;
   out.translation() += H.linear().col(1) * 0.35 + Eigen::Vector3d(0, 0, 0.35);
   return out;
@@ -280,7 +287,7 @@ void add_hand(DemoScript& s, const Eigen::Vector3d& camera) {
     for (int f = std::max(0, f0); f <= std::min(f1, s.frames - 1); ++f)
       s.hand[f] = carry_pose(A, B, f1 > f0 ? double(f - f0) / (f1 - f0) : 1.0, 0.08);
   };
-  const Pose home_in = raised_away(first.front()), home_out = raised_away(last.back());
+  const Pose home_in = raised_away(first.front()), home_out = raised_aside(last.back());
   travel(home_in, home_in, 0, att.front().start - 24);
   travel(home_in, first.front(), att.front().start - 24, att.front().start);
   for (size_t k = 0; k + 1 < att.size(); ++k) travel(last[k], first[k + 1], att[k].end, att[k + 1].start);

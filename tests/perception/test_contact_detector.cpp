@@ -119,6 +119,24 @@ TEST(ContactDetector, EventsHiddenByTheHandLieInsideTheGap) {
   EXPECT_EQ(a.carries[0].start, 27 - 8);  // 0.62 of the 13 frames hidden before it was seen moving
 }
 
+TEST(ContactDetector, ACarryNeverSeenToEndIsSaid) {
+  // Put down where the camera cannot see it: last seen moving at 49, never again.
+  PoseTracks t = make_tracks(100, {at(0, 0, 0.8)}, {{0, 20, 60, at(0.5, 0.2, 0.8)}});
+  for (int f = 50; f < 100; ++f) t.samples[0][f].valid = false;
+  const ContactAnalysis a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_EQ(a.carries[0].end, 49);
+  EXPECT_FALSE(a.carries[0].seen_at_rest_after);
+  std::vector<std::string> warnings;
+  build_demonstration(t, a, "t", {}, &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("P0 at frames 20-49: carried and never seen at rest after"), std::string::npos) << warnings[0];
+  // Seen at rest again: no warning.
+  const ContactAnalysis b = detect_contacts(make_tracks(100, {at(0, 0, 0.8)}, {{0, 20, 60, at(0.5, 0.2, 0.8)}}));
+  ASSERT_EQ(b.carries.size(), 1u);
+  EXPECT_TRUE(b.carries[0].seen_at_rest_after);
+}
+
 TEST(ContactDetector, OneFarMarkerIsPreciseFromFrameToFrame) {
   // One small marker far away: 17 mm expected error along the line of sight, but the same
   // error in every frame while the part rests. The grasp and release are where it moves.
