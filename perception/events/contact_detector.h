@@ -46,8 +46,8 @@ struct MotionInterval {
   int object = -1;
   int start = 0, end = 0;
   double start_confidence = 1.0, end_confidence = 1.0;
-  bool seen_at_rest_after = true;  // false: still moving (or hidden) when the video ends
   double distance = 0.0;  // m, farthest from the rest pose before
+  bool seen_at_rest_after = true;  // false: still moving (or hidden) when the video ends
 };
 
 struct ContactAnalysis {

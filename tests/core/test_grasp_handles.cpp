@@ -100,11 +100,10 @@ TEST(GraspHandles, YcbvPartsGetHandlesCloseToTheHandMadeOnes) {
     total += static_cast<int>(srdf.handles.size());
   }
   std::printf("all parts: %d of %d\n", matched, total);
-  // Measured 48 of 76 (2026-12-03; 36 with only the deepest grasp of each line and 24 handles).
-  // The misses are hand-made choices no rule of ours makes: obj_000007's handles turned 27
-  // degrees off its axes, corner grasps at 45 degrees, obj_000021's grasps closing along its
-  // length (more than the 48 kept).
-  EXPECT_GE(matched, 46);
+  // Measured 36 of 76 (2026-12-02). The misses are hand-made choices no rule of ours makes:
+  // obj_000007's handles turned 27 degrees off its axes, grasps 3 to 5 cm deep where ours go as
+  // deep as the palm allows (capped at the centre of mass), corner grasps at 45 degrees.
+  EXPECT_GE(matched, 34);
 }
 
 }  // namespace
