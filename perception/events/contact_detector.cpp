@@ -125,11 +125,11 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
   th.move_r = std::max(o.move_rotation, 2.5 * th.rest_r);
   // A sample less precise than the track's usual (fewer, smaller or farther markers) widens the
   // jitter's share of both thresholds by as much: its expected precision relative to the track's
-  // median (the floors stay). As it
-  // is, it is an absolute accuracy (one 30 mm marker 2 m away: 17 mm along the line of sight),
-  // and a resting part seen through the same markers keeps the same error from frame to frame,
-  // so only the measured jitter counts then. Seen through other markers than the reference was,
-  // the estimate may jump by that accuracy, so it counts too.
+  // median (the floors stay). As it is, the expected precision is an absolute accuracy (one 30 mm
+  // marker 2 m away: 17 mm along the line of sight), and a resting part seen through the same
+  // markers keeps the same error from frame to frame, so only the measured jitter counts then.
+  // Seen through other markers than the reference was, the estimate may jump by that accuracy,
+  // so it counts too.
   auto median_positive = [&](auto field) {
     std::vector<double> v;
     for (int f : frames)
@@ -198,11 +198,15 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     const int gap = first_moving - cur.start;
     if (gap > 1) cur.start = first_moving - static_cast<int>(std::lround(o.hidden_event_fraction * gap));
   };
-  auto rest_centre = [&]() {
+  // The rest's recent samples (the last kRecent) that `keep` accepts.
+  constexpr size_t kRecent = 30;
+  auto recent_rest = [&](auto keep) {
     std::vector<const PoseSample*> tail;
-    for (size_t k = rest.size() > 30 ? rest.size() - 30 : 0; k < rest.size(); ++k) tail.push_back(&at(rest[k]));
-    return centre_of(tail);
+    for (size_t k = rest.size() > kRecent ? rest.size() - kRecent : 0; k < rest.size(); ++k)
+      if (keep(at(rest[k]))) tail.push_back(&at(rest[k]));
+    return tail;
   };
+  auto rest_centre = [&]() { return centre_of(recent_rest([](const PoseSample&) { return true; })); };
   // The centre of moving[end - min_rest_frames, end) when those samples sit still about it.
   auto still_window = [&](int end) -> std::optional<Pose> {
     std::vector<const PoseSample*> window;
@@ -216,12 +220,12 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     const PoseSample& p = at(i);
     if (!in_motion) {
       // The rest pose as the sample's own markers saw it, when they did twice or more: their
-      // error is the same, so only the jitter tells them apart. Else the rest pose of all.
-      std::vector<const PoseSample*> same;
-      for (size_t k = rest.size() > 30 ? rest.size() - 30 : 0; k < rest.size(); ++k)
-        if (same_view(at(rest[k]), p)) same.push_back(&at(rest[k]));
+      // error is the same, so only the jitter tells them apart. Else the rest pose of all. (When
+      // every recent rest sample saw it alike, that is `ref` itself: ref is rest_centre().)
+      const std::vector<const PoseSample*> same = recent_rest([&](const PoseSample& r) { return same_view(r, p); });
       const bool seen_alike = same.size() >= 2;
-      const Pose seen_ref = seen_alike ? centre_of(same) : ref;
+      const bool all_alike = same.size() == std::min(rest.size(), kRecent);
+      const Pose seen_ref = seen_alike && !all_alike ? centre_of(same) : ref;
       if (still(p, seen_ref, seen_alike)) {
         rest.push_back(i);
         moving.clear();

@@ -825,21 +825,22 @@ SceneView::SurfaceHit SceneView::pickSurface(const QPointF& pixel) const {
   return hit;
 }
 
-bool SceneView::gizmoFrame(QVector3D& origin, float& length, Pose& pose, int& event, int& object, int& furniture) const {
+bool SceneView::gizmoFrame(QVector3D& origin, float& length, GizmoTarget& target) const {
   if (!scene_ || doc_->displayMode() != Document::DisplayMode::Demonstration) return false;
-  object = doc_->selectedObject();
-  event = doc_->editEvent();
-  furniture = doc_->selectedFurniture();
+  target = {};
+  const int furniture = doc_->selectedFurniture();
   const Cell* cell = doc_->cell();
   if (furniture >= 0 && cell && furniture < int(cell->furniture.size()) && !doc_->cellIsBundled()) {
-    object = event = -1;
-    pose = cell->furniture[size_t(furniture)].pose;
+    target.furniture = furniture;
+    target.pose = cell->furniture[size_t(furniture)].pose;
   } else {
-    furniture = -1;
-    if (object < 0 || event < 0) return false;
-    pose = world_pose_at_event(*scene_, doc_->demonstration(), size_t(event), object, doc_->initialConfiguration());
+    target.object = doc_->selectedObject();
+    target.event = doc_->editEvent();
+    if (target.object < 0 || target.event < 0) return false;
+    target.pose = world_pose_at_event(*scene_, doc_->demonstration(), size_t(target.event), target.object,
+                                      doc_->initialConfiguration());
   }
-  origin = toQt(pose.translation());
+  origin = toQt(target.pose.translation());
   length = std::clamp((camera_.eye() - origin).length() * 0.1f, 0.06f, 0.25f);
   return true;
 }
@@ -847,9 +848,8 @@ bool SceneView::gizmoFrame(QVector3D& origin, float& length, Pose& pose, int& ev
 void SceneView::buildGizmo(LineBuffer& out) const {
   QVector3D o;
   float len;
-  Pose pose;
-  int event, object, furniture;
-  if (!gizmoFrame(o, len, pose, event, object, furniture)) return;
+  GizmoTarget target;
+  if (!gizmoFrame(o, len, target)) return;
   for (int a = 0; a < 3; ++a) {
     QVector3D e;
     e[a] = 1.0f;
@@ -878,17 +878,15 @@ void SceneView::buildGizmo(LineBuffer& out) const {
 bool SceneView::gizmoCenter(QPointF& pixel) const {
   QVector3D o;
   float len;
-  Pose pose;
-  int event, object, furniture;
-  return gizmoFrame(o, len, pose, event, object, furniture) && camera_.project(o, size(), pixel);
+  GizmoTarget target;
+  return gizmoFrame(o, len, target) && camera_.project(o, size(), pixel);
 }
 
 int SceneView::gizmoHandleAt(const QPointF& p) const {
   QVector3D o;
   float len;
-  Pose pose;
-  int event, object, furniture;
-  if (!gizmoFrame(o, len, pose, event, object, furniture)) return -1;
+  GizmoTarget target;
+  if (!gizmoFrame(o, len, target)) return -1;
   QPointF c;
   if (!camera_.project(o, size(), c)) return -1;
   for (int a = 0; a < 3; ++a) {
@@ -909,13 +907,13 @@ int SceneView::gizmoHandleAt(const QPointF& p) const {
 }
 
 void SceneView::applyGizmoPose(const Pose& T) {
-  if (drag_furniture_ >= 0) {
+  if (drag_target_.furniture >= 0) {
     // One drag, one undo step (keys apart from the Cell panel's per-field ones).
     QString error;
-    if (!doc_->moveFurniture(drag_furniture_, T, 1'000'000 + drag_serial_ % 800, &error)) emit editRefused(error);
+    if (!doc_->moveFurniture(drag_target_.furniture, T, 1'000'000 + drag_serial_ % 800, &error)) emit editRefused(error);
     return;
   }
-  doc_->setObjectPose(drag_event_, drag_object_, T, 100 + drag_serial_ % 800);
+  doc_->setObjectPose(drag_target_.event, drag_target_.object, T, 100 + drag_serial_ % 800);
 }
 
 void SceneView::mousePressEvent(QMouseEvent* e) {
@@ -926,7 +924,7 @@ void SceneView::mousePressEvent(QMouseEvent* e) {
     if (handle >= 0) {
       QVector3D o;
       float len;
-      gizmoFrame(o, len, drag_start_pose_, drag_event_, drag_object_, drag_furniture_);
+      gizmoFrame(o, len, drag_target_);
       drag_ = handle < 3 ? Drag::Axis : Drag::Ring;
       drag_axis_ = handle;
       ++drag_serial_;
@@ -956,7 +954,7 @@ void SceneView::mouseMoveEvent(QMouseEvent* e) {
     case Drag::Axis: {
       // The part follows the cursor along the axis: the point of the axis line closest to the
       // ray under the cursor, now and at the press.
-      const QVector3D o = toQt(drag_start_pose_.translation());
+      const QVector3D o = toQt(drag_target_.pose.translation());
       QVector3D axis;
       axis[drag_axis_] = 1.0f;
       auto along = [&](const QPointF& pixel, bool& ok) {
@@ -973,22 +971,22 @@ void SceneView::mouseMoveEvent(QMouseEvent* e) {
       double shift = double(s1 - s0);
       const double step = (e->modifiers() & Qt::ControlModifier) ? 0.01 : 0.001;  // 1 cm or 1 mm steps
       shift = std::clamp(std::round(shift / step) * step, -2.0, 2.0);
-      Pose T = drag_start_pose_;
+      Pose T = drag_target_.pose;
       T.translation()[drag_axis_] += shift;
       applyGizmoPose(T);
       break;
     }
     case Drag::Ring: {
       QPointF c;
-      if (!camera_.project(toQt(drag_start_pose_.translation()), size(), c)) break;
+      if (!camera_.project(toQt(drag_target_.pose.translation()), size(), c)) break;
       const double a0 = std::atan2(-(press_pos_.y() - c.y()), press_pos_.x() - c.x());
       const double a1 = std::atan2(-(e->position().y() - c.y()), e->position().x() - c.x());
       double delta = a1 - a0;
-      if (camera_.eye().z() < float(drag_start_pose_.translation().z())) delta = -delta;
+      if (camera_.eye().z() < float(drag_target_.pose.translation().z())) delta = -delta;
       const double step = (e->modifiers() & Qt::ControlModifier) ? 5.0 : 0.5;  // degrees
       delta = std::round(delta * 180 / M_PI / step) * step * M_PI / 180;
-      Pose T = drag_start_pose_;
-      T.linear() = Eigen::AngleAxisd(delta, Eigen::Vector3d::UnitZ()).toRotationMatrix() * drag_start_pose_.linear();
+      Pose T = drag_target_.pose;
+      T.linear() = Eigen::AngleAxisd(delta, Eigen::Vector3d::UnitZ()).toRotationMatrix() * drag_target_.pose.linear();
       applyGizmoPose(T);
       break;
     }

@@ -119,8 +119,12 @@ private:
   // World transform of every item for the displayed state.
   std::vector<QMatrix4x4> itemTransforms() const;
   // What the gizmo moves: a part at an event (object, event), or a cell's furniture (furniture
-  // >= 0, object and event -1).
-  bool gizmoFrame(QVector3D& origin, float& length, Pose& pose, int& event, int& object, int& furniture) const;
+  // >= 0, object and event -1), and where it is.
+  struct GizmoTarget {
+    Pose pose = Pose::Identity();
+    int event = -1, object = -1, furniture = -1;
+  };
+  bool gizmoFrame(QVector3D& origin, float& length, GizmoTarget& target) const;
   void applyGizmoPose(const Pose& pose);
   void buildGizmo(LineBuffer& out) const;
 
@@ -150,8 +154,7 @@ private:
   QPointF press_pos_, last_pos_;
   bool moved_ = false;
   int drag_axis_ = -1;
-  Pose drag_start_pose_ = Pose::Identity();
-  int drag_event_ = -1, drag_object_ = -1, drag_furniture_ = -1;
+  GizmoTarget drag_target_;  // what the drag moves, and its pose when the drag began
   int drag_serial_ = 0;
 };
 

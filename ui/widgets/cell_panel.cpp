@@ -42,6 +42,13 @@ const std::pair<const char*, double> kUnits[] = {
 
 const char* kMeshFilter = QT_TRANSLATE_NOOP("CellPanel", "Meshes (*.stl *.obj *.ply *.dae *.gltf *.glb *.STL *.OBJ *.PLY)");
 
+// The SRDF of the same name beside a URDF (NAME.srdf), as the benchmark keeps them; "" when none.
+QString srdfBeside(const QString& urdf) {
+  const QFileInfo info(urdf);
+  const QFileInfo srdf(info.absolutePath() + QLatin1Char('/') + info.completeBaseName() + QStringLiteral(".srdf"));
+  return srdf.exists() ? srdf.absoluteFilePath() : QString();
+}
+
 QString shapeText(const CellFurniture& f) {
   switch (f.kind) {
     case CellFurniture::Kind::Box:
@@ -408,9 +415,8 @@ bool CellPanel::addFurniture(CellFurniture::Kind kind, const QString& mesh_file,
     f.file = info.absoluteFilePath().toStdString();
     f.scale = scale;
     f.pose.translation() = Eigen::Vector3d(0.6, y, 0.0);
-    // A URDF's support surfaces come from the SRDF beside it, when there is one (NAME.srdf).
-    const QFileInfo srdf(info.absolutePath() + QLatin1Char('/') + info.completeBaseName() + QStringLiteral(".srdf"));
-    if (kind == CellFurniture::Kind::Urdf && srdf.exists()) f.srdf = srdf.absoluteFilePath().toStdString();
+    // A URDF's support surfaces come from the SRDF beside it, when there is one.
+    if (kind == CellFurniture::Kind::Urdf) f.srdf = srdfBeside(mesh_file).toStdString();
   }
   after.furniture.push_back(f);
   if (!edit(after, tr("Add %1").arg(q(f.name)))) return false;
@@ -439,12 +445,13 @@ void CellPanel::replaceRobotFromDialog() {
                                                     {}, tr("URDF files (*.urdf *.URDF)"));
   if (urdf.isEmpty()) return;
   // The SRDF (groups, gripper, collision pairs to skip) of the same name beside it, else asked for.
-  const QFileInfo info(urdf);
-  QString srdf = info.absolutePath() + QLatin1Char('/') + info.completeBaseName() + QStringLiteral(".srdf");
-  if (!QFileInfo::exists(srdf))
+  QString srdf = srdfBeside(urdf);
+  if (srdf.isEmpty()) {
+    const QFileInfo info(urdf);
     srdf = QFileDialog::getOpenFileName(this, tr("The SRDF of %1 (its gripper and the link pairs that never collide)")
                                                   .arg(info.fileName()),
                                         info.absolutePath(), tr("SRDF files (*.srdf *.SRDF)"));
+  }
   if (!srdf.isEmpty()) replaceRobot({}, urdf, srdf);
 }
 

@@ -1,10 +1,11 @@
 #pragma once
 // The cell editor: the robot, the furniture and the parts of a project on a cell file, each
 // placed by typing millimetres and degrees; parts added from mesh files (put down on a free spot
-// of a support), furniture as a box, a cylinder or a mesh file; a part's handles listed, one
-// deleted or all generated again; the robot replaced by a bundled one or a URDF + SRDF from disk; ArUco markers stuck on a part by clicking its face in the 3D
-// view (Stick Markers), listed, deleted. Every change is one undo step and is written to the cell file
-// at once (Document::editCell); a bundled example is first saved under the user's own name.
+// of a support), furniture as a box, a cylinder, a mesh file or a URDF; a part's handles listed,
+// one deleted or all generated again; the robot replaced by a bundled one or a URDF + SRDF from
+// disk; ArUco markers stuck on a part by clicking its face in the 3D view (Stick Markers),
+// listed, deleted. Every change is one undo step and is written to the cell file at once
+// (Document::editCell); a bundled example is first saved under the user's own name.
 #include <QWidget>
 
 #include "ui/document/document.h"
