@@ -18,6 +18,8 @@ PACKAGES=(
   lintian
   # the parsers' fuzz targets (scripts/fuzz.sh, tests/fuzz): clang 14 and its libFuzzer
   clang-14 libfuzzer-14-dev
+  # the placement search as a Slurm job array (packaging/slurm, tests/slurm): a one-node cluster
+  munge slurmctld slurmd slurm-client python3
 )
 
 missing=()

@@ -5,6 +5,10 @@
 #include <functional>
 #include <string>
 
+namespace demoplan {
+struct PlannerSettings;
+}
+
 namespace demoplan::cli {
 
 enum ExitCode { kOk = 0, kFailed = 1, kBadInput = 2 };
@@ -35,6 +39,11 @@ Command register_board_command(CLI::App& app);
 Command register_markers_command(CLI::App& app);
 Command register_calibrate_command(CLI::App& app);
 Command register_synth_board_command(CLI::App& app);
+Command register_place_command(CLI::App& app);
+Command register_merge_command(CLI::App& app);
+
+// --planner, --seed, --time-limit and the planner's tuning options (plan, place).
+void add_planner_options(CLI::App& sub, PlannerSettings& settings);
 
 // The benchmark data folder: --data-dir, else $DEMOPLAN_DATA_DIR, else the bundled copy.
 std::string default_data_dir();

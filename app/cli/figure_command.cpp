@@ -1,7 +1,6 @@
 // demoplan-cli figure: the paper's Fig. 4 from `bench --out` files, as SVG or PNG. Rows are
 // robots; columns success rate, planning time, path length and grasps; groups are tasks; one bar
 // per planner found in the files, each planner in the same colour in every figure.
-#include <QGuiApplication>
 #include <QStringList>
 #include <cmath>
 #include <iostream>
@@ -10,6 +9,7 @@
 
 #include "app/cli/bench_results.h"
 #include "app/cli/command.h"
+#include "app/cli/offscreen_gui.h"
 #include "core/error.h"
 #include "plot/bar_chart.h"
 #include "plot/figure_file.h"
@@ -69,19 +69,7 @@ int run_figure(const FigureOptions& o) {
   const BenchResults results = read_bench_results(o.files);
   for (const auto& n : results.notes) std::cerr << "note: " << n << "\n";
 
-  // Fonts need a QGuiApplication; the CLI never opens a window, so offscreen works everywhere.
-  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-  static int argc = 1;
-  static char arg0[] = "demoplan-cli";
-  static char* argv[] = {arg0, nullptr};
-  // Qt's remarks (no XDG_RUNTIME_DIR, ...) are not ours to print: stderr is the summary.
-  struct QuietQt {
-    QtMessageHandler previous = qInstallMessageHandler([](QtMsgType type, const QMessageLogContext&, const QString& m) {
-      if (type == QtCriticalMsg || type == QtFatalMsg) std::cerr << m.toStdString() << "\n";
-    });
-    ~QuietQt() { qInstallMessageHandler(previous); }
-  } quiet;
-  QGuiApplication app(argc, argv);
+  const OffscreenGui gui;  // fonts
 
   std::vector<QString> groups, series;
   for (const auto& t : results.tasks) groups.push_back(QString::fromStdString(t));

@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
                                       register_grasps_command(app), register_demo_command(app),
                                       register_board_command(app), register_markers_command(app),
                                       register_calibrate_command(app),
-                                      register_synth_board_command(app)};
+                                      register_synth_board_command(app),
+                                      register_place_command(app), register_merge_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

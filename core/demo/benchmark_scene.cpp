@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/geometry/polygon_2d.h"
 #include "core/io/json_file.h"
 
 namespace demoplan {
@@ -24,15 +25,12 @@ JsonField robot_entry(const Json& json, const std::string& file, const std::stri
 // The box the benchmark puts under a fixed robot, from the pose file (README 5.1). The file
 // keeps the benchmark's negative heights where the base is below a shelf top; the box then
 // spans |height| (it only matters for objects and moving links). A zero-size box is omitted.
-bool add_support_box(const JsonField& entry, const std::string& name, Scene& scene) {
-  const Pose pose = entry["pose"].pose();
-  const Eigen::VectorXd raw = entry["size"].vector();
-  if (raw.size() != 3) entry["size"].fail("must have 3 entries");
-  const Eigen::Vector3d size = raw.cwiseAbs();
+bool add_support_box(const Pose& pose, const Eigen::Vector3d& raw_size, const std::string& name, Scene& scene) {
+  const Eigen::Vector3d size = raw_size.cwiseAbs();
   if ((size.array() <= 0).any()) return false;
   SceneFurniture box;
   box.name = name;
-  box.kind = "box";
+  box.kind = kSupportBoxKind;
   box.model.name = name;
   box.model.links.push_back({});
   box.model.links[0].name = "box";
@@ -67,6 +65,12 @@ BenchmarkRobot load_benchmark_robot(const std::string& data_dir, const std::stri
   if (type != "fixed" && type != "mobile") r["robot_type"].fail("must be 'fixed' or 'mobile'");
   out.fixed_base = type == "fixed";
   out.initial_configuration = r["initial_configuration"].vector();
+  if (r.has("footprint_size")) {
+    const Eigen::VectorXd size = r["footprint_size"].vector(), offset = r["footprint_pos"].vector();
+    if (size.size() != 2) r["footprint_size"].fail("must have 2 entries");
+    if (offset.size() != 2) r["footprint_pos"].fail("must have 2 entries");
+    out.footprint_size = size, out.footprint_offset = offset;
+  }
   return out;
 }
 
@@ -147,8 +151,10 @@ Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_
     scene.furniture.push_back(std::move(fu));
   }
   if (robot.fixed_base) {
-    const JsonField boxes = poses["support_box"];
-    add_support_box(boxes[key], task.name() + "_" + std::to_string(task.furniture.size()) + "_box_" +
+    const JsonField box = poses["support_box"][key];
+    const Eigen::VectorXd size = box["size"].vector();
+    if (size.size() != 3) box["size"].fail("must have 3 entries");
+    add_support_box(box["pose"].pose(), size, task.name() + "_" + std::to_string(task.furniture.size()) + "_box_" +
                                     robot_name + "_" + key, scene);
   }
 
@@ -165,6 +171,51 @@ Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_
     scene.objects.push_back(std::move(so));
   }
   return scene;
+}
+
+SupportBox support_box_at(const Scene& scene, const BenchmarkRobot& robot, const Pose& base) {
+  const Eigen::Vector3d p = base.translation();
+  // Inclusive left-of-every-edge test: the benchmark's polygons are counter-clockwise.
+  auto inside = [&](const std::vector<Eigen::Vector3d>& polygon) {
+    for (size_t i = 0; i < polygon.size(); ++i) {
+      const Eigen::Vector3d& a = polygon[i];
+      const Eigen::Vector3d& b = polygon[(i + 1) % polygon.size()];
+      if (cross2((b - a).head<2>(), (p - a).head<2>()) < 0) return false;
+    }
+    return polygon.size() >= 3;
+  };
+  double h = 0;
+  for (auto f = scene.furniture.rbegin(); f != scene.furniture.rend(); ++f) {
+    if (f->kind == kSupportBoxKind) continue;
+    for (const ContactSurface& c : f->srdf.contacts) {
+      const Pose& link = f->link_poses[static_cast<size_t>(f->model.link_index(c.link))];
+      for (auto polygon : c.polygon_vertices()) {
+        for (Eigen::Vector3d& v : polygon) v = link * v;
+        const double zs = polygon.front().z();
+        if (inside(polygon) && zs > h) h = p.z() - zs;  // a height against a height difference, as written
+      }
+    }
+  }
+  SupportBox box;
+  const double height = h == 0 ? p.z() : h;
+  box.size = {robot.footprint_size.x(), robot.footprint_size.y(), height};
+  Pose centre = base;
+  centre.translation() = Eigen::Vector3d(p.x(), p.y(), p.z() - height / 2);
+  box.pose = centre * Pose(Eigen::Translation3d(robot.footprint_offset.x(), robot.footprint_offset.y(), 0));
+  return box;
+}
+
+void move_benchmark_robot(Scene& scene, const BenchmarkRobot& robot, const Pose& base) {
+  if (!robot.fixed_base)
+    throw InputError(robot.urdf, "robot_type",
+                     robot.name + " is mobile: its base moves through its own joints, it is not stood anywhere");
+  std::string name;
+  for (auto f = scene.furniture.begin(); f != scene.furniture.end();)
+    if (f->kind == kSupportBoxKind) name = f->name, f = scene.furniture.erase(f);
+    else ++f;
+  scene.robot.base = base;
+  const SupportBox box = support_box_at(scene, robot, base);
+  add_support_box(box.pose, box.size, name.empty() ? "support_box_" + robot.name : name, scene);
 }
 
 namespace {

@@ -15,6 +15,8 @@ struct BenchmarkRobot {
   std::string urdf, srdf;  // absolute
   bool fixed_base = true;
   Eigen::VectorXd initial_configuration;
+  // The footprint of the support box under a fixed robot, in the base frame (README 5.1).
+  Eigen::Vector2d footprint_size = Eigen::Vector2d::Zero(), footprint_offset = Eigen::Vector2d::Zero();
 };
 
 BenchmarkRobot load_benchmark_robot(const std::string& data_dir, const std::string& name);
@@ -32,6 +34,23 @@ struct SceneLoadOptions {
 // box under a fixed robot, and the task's planning objects (trays excluded). Throws InputError.
 Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot, int pose_id,
                             const SceneLoadOptions& options = {});
+
+// The kind of the support box among the scene's furniture.
+inline constexpr const char* kSupportBoxKind = "support_box";
+
+// The support box under a fixed robot at `base` (README 5.1): from the highest contact surface
+// of the furniture under the base, or the floor, up to the base; `size` may have a negative
+// height exactly as the benchmark computes it.
+struct SupportBox {
+  Pose pose = Pose::Identity();
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
+};
+SupportBox support_box_at(const Scene& scene, const BenchmarkRobot& robot, const Pose& base);
+
+// Stands the scene's robot at `base`: a fixed robot's support box made again for it (a base the
+// task does not publish, as the placement search tries). Throws InputError for a mobile robot,
+// whose base moves through its own joints.
+void move_benchmark_robot(Scene& scene, const BenchmarkRobot& robot, const Pose& base);
 
 // The robot's initial configuration with the objects at the first (start) or last (goal)
 // subgoal column; tasks without subgoals use the first and last raw frames.

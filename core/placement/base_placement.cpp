@@ -1,0 +1,139 @@
+#include "core/placement/base_placement.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/error.h"
+#include "core/graph/pick_feasibility.h"
+#include "core/graph/state_validity.h"
+#include "core/placement/base_clearance.h"
+#include "core/planning/plan_job.h"
+#include "core/trajectory/joint_limits.h"
+#include "core/validation/trajectory_collisions.h"
+
+namespace demoplan {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+const PlacementRun* best_run(const std::vector<PlacementRun>& runs) {
+  const PlacementRun* best = nullptr;
+  for (const PlacementRun& r : runs)
+    if (r.valid && (!best || r.cycle_time_s < best->cycle_time_s)) best = &r;
+  return best;
+}
+
+PlacementRun plan_once(const PlanningProblem& problem, const PlacementSettings& settings, std::uint64_t seed,
+                       const std::atomic<bool>* cancel) {
+  PlannerSettings s = settings.planner;
+  s.planner.seed = seed;
+  s.shortcut = true;
+  const PlanReport report = run_plan_job(problem, s, {}, cancel, {.assess_on_failure = false,
+                                                                  .validate_planner_path = false});
+  PlacementRun run;
+  run.seed = seed;
+  run.planning_time_s = report.plan.planning_time_s;
+  if (!report.solved()) {
+    run.message = report.plan.message.empty() ? "not solved" : report.plan.message;
+    return run;
+  }
+  if (!report.valid()) {
+    run.message = "invalid: " + report.validation.message;
+    return run;
+  }
+  // The cycle: the trajectory the exported program would run (rests added where a blend touches).
+  const JointLimitSet limits = trajectory_limits(problem.scene->robot.model);
+  const ClearTrajectory timed = time_parameterize_clear(*problem.scene, *problem.checker, report.path, limits, {});
+  run.valid = true;
+  run.cycle_time_s = timed.trajectory.duration;
+  run.path_length = report.validation.length.robot;
+  run.grasps = report.validation.grasps;
+  return run;
+}
+
+}  // namespace
+
+double PlacementCandidate::success_rate() const {
+  if (runs.empty()) return 0;
+  return static_cast<double>(std::count_if(runs.begin(), runs.end(), [](const auto& r) { return r.valid; })) /
+         static_cast<double>(runs.size());
+}
+
+double PlacementCandidate::median_time_s() const {
+  if (runs.empty()) return 0;
+  std::vector<double> t;
+  for (const auto& r : runs) t.push_back(r.planning_time_s);
+  std::sort(t.begin(), t.end());
+  const size_t n = t.size();
+  return n % 2 ? t[n / 2] : (t[n / 2 - 1] + t[n / 2]) / 2;
+}
+
+std::optional<double> PlacementCandidate::cycle_time_s() const {
+  const PlacementRun* best = best_run(runs);
+  return best ? std::optional<double>(best->cycle_time_s) : std::nullopt;
+}
+
+std::optional<double> PlacementCandidate::path_length() const {
+  const PlacementRun* best = best_run(runs);
+  return best ? std::optional<double>(best->path_length) : std::nullopt;
+}
+
+std::string screen_candidate(const PlanningProblem& problem, int samples) {
+  const Scene& scene = *problem.scene;
+  const ConstraintGraph& graph = *problem.graph;
+  const StateValidity validity(scene, graph, *problem.checker);
+  CollisionData data = problem.checker->make_data();
+  if (std::string base = base_clearance(scene); !base.empty()) return base;
+  CollisionPair hit;
+  if (!validity.configuration_free(graph.start_state, graph.q_start, data, &hit))
+    return "the start configuration collides: " + hit.first + " / " + hit.second;
+  if (!validity.configuration_free(graph.goal_state, graph.q_goal, data, &hit))
+    return "the goal configuration collides: " + hit.first + " / " + hit.second;
+  const FeasibilityReport f = assess_picks(scene, graph, *problem.checker, samples, 1);
+  if (f.feasible()) return "";
+  std::string summary = f.summary(scene);
+  const size_t end = summary.find('\n');
+  return end == std::string::npos ? summary : summary.substr(0, end);
+}
+
+PlacementCandidate evaluate_candidate(const ProblemAtBase& problem_at, int index, const BasePose& base,
+                                      const PlacementSettings& settings, const std::atomic<bool>* cancel) {
+  PlacementCandidate c;
+  c.index = index;
+  c.base = base;
+  if (cancel && cancel->load()) return c;
+  const auto t0 = std::chrono::steady_clock::now();
+  PlanningProblem problem;
+  try {
+    problem = problem_at(base.pose());
+    c.reason = screen_candidate(problem, settings.screen_samples);
+  } catch (const InputError& e) {
+    c.reason = e.reason();
+  }
+  c.screened = true;
+  c.feasible = c.reason.empty();
+  c.screen_time_s = seconds_since(t0);
+  if (!problem.graph || (!c.feasible && !settings.plan_rejected)) return c;
+  for (std::uint64_t seed : settings.seeds) {
+    if (cancel && cancel->load()) break;
+    c.runs.push_back(plan_once(problem, settings, seed, cancel));
+  }
+  return c;
+}
+
+void rank_candidates(std::vector<PlacementCandidate>& candidates) {
+  constexpr double kNone = 1e300;
+  std::sort(candidates.begin(), candidates.end(), [&](const PlacementCandidate& a, const PlacementCandidate& b) {
+    const double sa = a.success_rate(), sb = b.success_rate();
+    if (sa != sb) return sa > sb;
+    if (a.feasible != b.feasible) return a.feasible;
+    const double ca = a.cycle_time_s().value_or(kNone), cb = b.cycle_time_s().value_or(kNone);
+    if (ca != cb) return ca < cb;
+    return a.index < b.index;
+  });
+}
+
+}  // namespace demoplan

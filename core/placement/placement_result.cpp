@@ -1,0 +1,169 @@
+#include "core/placement/placement_result.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "core/error.h"
+#include "core/io/json_file.h"
+
+namespace demoplan {
+
+namespace {
+
+constexpr const char* kFormat = "demoplan-placement";
+constexpr int kVersion = 1;
+
+nlohmann::json optional_number(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
+
+nlohmann::json candidate_json(const PlacementCandidate& c) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const PlacementRun& r : c.runs)
+    runs.push_back({{"seed", r.seed}, {"valid", r.valid}, {"planning_time_s", r.planning_time_s},
+                    {"cycle_time_s", r.valid ? nlohmann::json(r.cycle_time_s) : nlohmann::json()},
+                    {"path_length", r.valid ? nlohmann::json(r.path_length) : nlohmann::json()},
+                    {"grasps", r.grasps}, {"message", r.message}});
+  return {{"index", c.index},
+          {"base_pose", {{"x", c.base.x}, {"y", c.base.y}, {"z", c.base.z}, {"yaw", c.base.yaw}}},
+          {"screened", c.screened},
+          {"feasible", c.feasible},
+          {"reason", c.reason},
+          {"screen_time_s", c.screen_time_s},
+          {"success_rate", c.success_rate()},
+          {"median_time_s", c.median_time_s()},
+          {"cycle_time_s", optional_number(c.cycle_time_s())},
+          {"path_length", optional_number(c.path_length())},
+          {"runs", runs}};
+}
+
+PlacementCandidate read_candidate(const JsonField& j) {
+  PlacementCandidate c;
+  c.index = j["index"].integer();
+  const JsonField b = j["base_pose"];
+  c.base = {b["x"].number(), b["y"].number(), b["z"].number(), b["yaw"].number()};
+  c.screened = j["screened"].boolean();
+  c.feasible = j["feasible"].boolean();
+  c.reason = j["reason"].string();
+  c.screen_time_s = j["screen_time_s"].number();
+  const JsonField runs = j["runs"];
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const JsonField r = runs[i];
+    PlacementRun run;
+    run.seed = static_cast<std::uint64_t>(r["seed"].integer());
+    run.valid = r["valid"].boolean();
+    run.planning_time_s = r["planning_time_s"].number();
+    if (run.valid) run.cycle_time_s = r["cycle_time_s"].number(), run.path_length = r["path_length"].number();
+    run.grasps = r["grasps"].integer();
+    run.message = r["message"].string();
+    c.runs.push_back(run);
+  }
+  return c;
+}
+
+}  // namespace
+
+int PlacementResult::feasible_count() const {
+  return static_cast<int>(std::count_if(candidates.begin(), candidates.end(), [](const auto& c) { return c.feasible; }));
+}
+
+std::string PlacementResult::message() const {
+  if (!complete()) return "";
+  for (const auto& c : candidates)
+    if (c.success_rate() > 0) return "";
+  const size_t n = candidates.size();
+  if (feasible_count() > 0)
+    return std::to_string(feasible_count()) + " of " + std::to_string(n) +
+           " candidates pass the screen, but no planning run found a valid path from any of them";
+  // The most frequent reason, with the pick's own words.
+  std::map<std::string, int> reasons;
+  for (const auto& c : candidates)
+    if (c.screened) ++reasons[c.reason];
+  if (reasons.empty()) return "no candidate was evaluated";
+  const auto top = std::max_element(reasons.begin(), reasons.end(),
+                                    [](const auto& a, const auto& b) { return a.second < b.second; });
+  return "no base pose of the " + std::to_string(n) + " in the region can do every pick; most often (" +
+         std::to_string(top->second) + " of " + std::to_string(n) + "): " + top->first;
+}
+
+nlohmann::json placement_result_json(const PlacementResult& r) {
+  nlohmann::json candidates = nlohmann::json::array();
+  for (const auto& c : r.candidates) candidates.push_back(candidate_json(c));
+  nlohmann::json j{{"format", kFormat},
+                   {"version", kVersion},
+                   {"arguments", r.arguments},
+                   {"candidate_count", r.candidate_count},
+                   {"shard", {{"index", r.shard}, {"count", r.shards}}},
+                   {"evaluated", r.candidates.size()},
+                   {"feasible", r.feasible_count()},
+                   {"cancelled", r.cancelled},
+                   {"wall_time_s", r.wall_time_s},
+                   {"candidates", candidates}};
+  if (r.complete()) j["message"] = r.message();
+  return j;
+}
+
+void save_placement_result(const std::string& file, const PlacementResult& r) {
+  write_json_file_atomic(file, placement_result_json(r));
+}
+
+PlacementResult load_placement_result(const std::string& file) {
+  const Json json = read_json_file(file);
+  const JsonField root(json, file);
+  check_format(root, kFormat, kVersion, "placement result");
+  PlacementResult r;
+  r.arguments = root["arguments"].value();
+  r.candidate_count = root["candidate_count"].integer();
+  r.shard = root["shard"]["index"].integer();
+  r.shards = root["shard"]["count"].integer();
+  if (r.shards < 1 || r.shard < 1 || r.shard > r.shards) root["shard"].fail("index must be within 1..count");
+  r.wall_time_s = root["wall_time_s"].number();
+  r.cancelled = root["cancelled"].boolean();
+  const JsonField candidates = root["candidates"];
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    r.candidates.push_back(read_candidate(candidates[i]));
+    if (r.candidates.back().index < 0 || r.candidates.back().index >= r.candidate_count)
+      candidates[i]["index"].fail("must be within 0.." + std::to_string(r.candidate_count - 1));
+  }
+  return r;
+}
+
+PlacementResult merge_placement_results(const std::vector<std::string>& files) {
+  if (files.empty()) throw InputError("command line", "files", "no partial results given");
+  PlacementResult out;
+  std::map<int, std::string> shard_files;
+  std::set<int> seen;
+  for (const std::string& file : files) {
+    PlacementResult part = load_placement_result(file);
+    if (shard_files.empty()) {
+      out.arguments = part.arguments;
+      out.candidate_count = part.candidate_count;
+      out.shards = part.shards;
+    } else if (part.arguments != out.arguments || part.candidate_count != out.candidate_count ||
+               part.shards != out.shards) {
+      throw InputError(file, part.arguments != out.arguments ? "arguments" : "shard",
+                       "is from another search than " + shard_files.begin()->second +
+                           " (different arguments or shard count)");
+    }
+    if (shard_files.count(part.shard))
+      throw InputError(file, "shard", "shard " + std::to_string(part.shard) + " is also in " + shard_files[part.shard]);
+    if (part.cancelled) throw InputError(file, "cancelled", "this shard was cancelled before it finished");
+    shard_files[part.shard] = file;
+    for (auto& c : part.candidates)
+      if (!seen.insert(c.index).second)
+        throw InputError(file, "candidates", "candidate " + std::to_string(c.index) + " is in two files");
+    out.wall_time_s = std::max(out.wall_time_s, part.wall_time_s);
+    std::move(part.candidates.begin(), part.candidates.end(), std::back_inserter(out.candidates));
+  }
+  for (int s = 1; s <= out.shards; ++s)
+    if (!shard_files.count(s))
+      throw InputError(files.front(), "shard", "shard " + std::to_string(s) + " of " + std::to_string(out.shards) +
+                                                   " is missing");
+  if (static_cast<int>(out.candidates.size()) != out.candidate_count)
+    throw InputError(files.front(), "candidates", std::to_string(out.candidates.size()) + " of " +
+                                                      std::to_string(out.candidate_count) + " candidates in the shards");
+  out.shard = out.shards = 1;
+  rank_candidates(out.candidates);
+  return out;
+}
+
+}  // namespace demoplan
