@@ -22,8 +22,39 @@ QColor sequential_color(double t) {
   return QColor(mix(0), mix(1), mix(2));
 }
 
+namespace {
+const TextStyle kTitleStyle{.size = 12, .bold = true};
+constexpr double kBarWidth = 110, kLeftWidth = 48, kBottomHeight = 36;
+}  // namespace
+
+HeatMapFrame heat_map_frame(const QRectF& area, const HeatMap& map) {
+  // Room: title on top, colour bar and keys on the right, tick labels left and below.
+  const double title_h = map.title.isEmpty() ? 0 : Canvas::textSize(map.title, kTitleStyle).height() + 8;
+  const QRectF room(QPointF(area.left() + kLeftWidth, area.top() + title_h),
+                    QPointF(area.right() - kBarWidth, area.bottom() - kBottomHeight));
+  HeatMapFrame f;
+  f.x0 = map.x0, f.y0 = map.y0, f.pad = map.cell / 2;
+  const double dx = map.x1 - map.x0 + 2 * f.pad, dy = map.y1 - map.y0 + 2 * f.pad;
+  f.scale = std::max(1e-9, std::min(room.width() / dx, room.height() / dy));
+  f.box = QRectF(room.left(), room.top(), dx * f.scale, dy * f.scale);
+  f.side = std::max(3.0, map.cell * f.scale);
+  return f;
+}
+
+int heat_map_sample_at(const QRectF& area, const HeatMap& map, QPointF pixel) {
+  const HeatMapFrame f = heat_map_frame(area, map);
+  int found = -1;
+  bool found_valued = false;
+  for (size_t i = 0; i < map.samples.size(); ++i) {
+    const QPointF c = f.to_pixel(map.samples[i].x, map.samples[i].y);
+    if (std::abs(pixel.x() - c.x()) > f.side / 2 || std::abs(pixel.y() - c.y()) > f.side / 2) continue;
+    const bool valued = std::isfinite(map.samples[i].value);  // drawn over the grey ones
+    if (found < 0 || valued || !found_valued) found = static_cast<int>(i), found_valued = valued;
+  }
+  return found;
+}
+
 void draw_heat_map(Canvas& canvas, const QRectF& area, const HeatMap& map) {
-  const TextStyle title_style{.size = 12, .bold = true};
   const TextStyle tick_y{.size = 9.5, .color = kAxisColor, .align = Qt::AlignRight | Qt::AlignVCenter};
   const TextStyle tick_x{.size = 9.5, .color = kAxisColor, .align = Qt::AlignHCenter | Qt::AlignTop};
   const TextStyle label{.size = 10, .color = kAxisColor, .align = Qt::AlignHCenter | Qt::AlignBottom};
@@ -35,18 +66,12 @@ void draw_heat_map(Canvas& canvas, const QRectF& area, const HeatMap& map) {
   const bool any_value = std::isfinite(v0);
   const Ticks vt = any_value ? nice_ticks(v0, v1, 5) : Ticks{};
 
-  // Room: title on top, colour bar and legend on the right, tick labels left and below.
-  const double title_h = map.title.isEmpty() ? 0 : Canvas::textSize(map.title, title_style).height() + 8;
-  const double bar_w = 110, left_w = 48, bottom_h = 36;
-  const QRectF room(QPointF(area.left() + left_w, area.top() + title_h), QPointF(area.right() - bar_w, area.bottom() - bottom_h));
-  // Equal scale on both axes, the region centred in the room.
-  const double pad = map.cell / 2;
-  const double dx = map.x1 - map.x0 + 2 * pad, dy = map.y1 - map.y0 + 2 * pad;
-  const double scale = std::min(room.width() / dx, room.height() / dy);
-  const QRectF box(room.left(), room.top(), dx * scale, dy * scale);
-  auto sx = [&](double x) { return box.left() + (x - map.x0 + pad) * scale; };
-  auto sy = [&](double y) { return box.bottom() - (y - map.y0 + pad) * scale; };
-  if (!map.title.isEmpty()) canvas.text({area.left(), area.top()}, map.title, title_style);
+  const HeatMapFrame frame = heat_map_frame(area, map);
+  const QRectF& box = frame.box;
+  const double pad = frame.pad;
+  auto sx = [&](double x) { return frame.to_pixel(x, map.y0).x(); };
+  auto sy = [&](double y) { return frame.to_pixel(map.x0, y).y(); };
+  if (!map.title.isEmpty()) canvas.text({area.left(), area.top()}, map.title, kTitleStyle);
 
   canvas.fillRect(box, QColor(0xf6, 0xf6, 0xf6));
   const Ticks xt = nice_ticks(map.x0, map.x1, 6), yt = nice_ticks(map.y0, map.y1, 6);
@@ -64,7 +89,7 @@ void draw_heat_map(Canvas& canvas, const QRectF& area, const HeatMap& map) {
   canvas.text({area.left() + 10, box.center().y()}, map.y_label,
               TextStyle{.size = 10, .color = kAxisColor, .align = Qt::AlignHCenter | Qt::AlignTop, .vertical = true});
 
-  const double side = std::max(3.0, map.cell * scale);
+  const double side = frame.side;
   auto color_of = [&](double v) { return sequential_color((v - vt.min) / std::max(vt.max - vt.min, 1e-12)); };
   canvas.beginGroup(QStringLiteral("samples"));
   // Grey first, so coloured samples stay visible where squares overlap.

@@ -30,6 +30,18 @@ struct HeatMap {
   QString marked_label, references_label;
 };
 
+// Where the region lies in `area` (metres at one scale on both axes, room left for the colour
+// bar): what draw_heat_map draws by, and what a view hit-tests clicks with.
+struct HeatMapFrame {
+  QRectF box;  // the region plus half a square around it, in pixels
+  double x0 = 0, y0 = 0, pad = 0, scale = 1;
+  double side = 3;  // a sample square's side, pixels
+  QPointF to_pixel(double x, double y) const { return {box.left() + (x - x0 + pad) * scale, box.bottom() - (y - y0 + pad) * scale}; }
+};
+HeatMapFrame heat_map_frame(const QRectF& area, const HeatMap& map);
+// The sample under `pixel` (the last drawn on top), -1 for none.
+int heat_map_sample_at(const QRectF& area, const HeatMap& map, QPointF pixel);
+
 // The colour of t in [0, 1] on a perceptually even dark-to-light scale (viridis).
 QColor sequential_color(double t);
 

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/placement/placement_region.h"
 
 namespace demoplan::cli {
 
@@ -30,6 +31,23 @@ std::vector<int> int_range(const std::string& s, const std::string& option) {
     }
   }
   return out;
+}
+
+std::pair<int, int> parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  try {
+    if (slash != std::string::npos) {
+      size_t a = 0, b = 0;
+      const int i = std::stoi(text.substr(0, slash), &a), n = std::stoi(text.substr(slash + 1), &b);
+      if (a == slash && b == text.size() - slash - 1) {
+        shard_indices(0, i, n);  // throws for one out of range
+        return {i, n};
+      }
+    }
+  } catch (const std::invalid_argument&) {
+  } catch (const std::out_of_range&) {
+  }
+  throw InputError("command line", "--shard", "'" + text + "' is not I/N (e.g. 2/4)");
 }
 
 }  // namespace demoplan::cli

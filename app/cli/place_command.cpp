@@ -11,6 +11,7 @@
 #include "app/cli/task_inputs.h"
 #include "core/error.h"
 #include "core/placement/placement_search.h"
+#include "core/project/placement_problem.h"
 #include "core/planning/planner_registry.h"
 
 namespace demoplan::cli {
@@ -26,23 +27,6 @@ struct PlaceOptions {
   bool json = false;
 };
 
-std::pair<int, int> parse_shard(const std::string& text) {
-  const auto slash = text.find('/');
-  try {
-    if (slash != std::string::npos) {
-      size_t a = 0, b = 0;
-      const int i = std::stoi(text.substr(0, slash), &a), n = std::stoi(text.substr(slash + 1), &b);
-      if (a == slash && b == text.size() - slash - 1) {
-        shard_indices(0, i, n);  // throws for one out of range
-        return {i, n};
-      }
-    }
-  } catch (const std::invalid_argument&) {
-  } catch (const std::out_of_range&) {
-  }
-  throw InputError("command line", "--shard", "'" + text + "' is not I/N (e.g. 2/4)");
-}
-
 // The planning problem at any base pose, and the reference base the region's default z is from.
 struct Search {
   ProblemAtBase problem_at;
@@ -50,25 +34,14 @@ struct Search {
 };
 
 Search benchmark_search(const TaskInputs& in) {
-  auto task = std::make_shared<const BenchmarkTask>(load_benchmark_task(in.data_dir, in.task));
-  const BenchmarkRobot robot = load_benchmark_robot(task->data_dir, in.robot);
+  const BenchmarkTask task = load_benchmark_task(in.data_dir, in.task);
+  const BenchmarkRobot robot = load_benchmark_robot(task.data_dir, in.robot);
   if (!robot.fixed_base)
     throw InputError("command line", "--robot", in.robot + " is mobile: it drives to each pick, there is no base to place");
-  auto scene = benchmark_scene_with_handles(*task, in.robot, in.pose, in.handles);
-  Search s;
-  s.reference = scene->robot.base;
-  // Events and poses from the tracks are found once; the cleaned or raw key poses per base.
-  std::shared_ptr<const Demonstration> demo;
-  if (in.from == "tracks") demo = std::make_shared<Demonstration>(make_task_instance(*task, scene, in.from).demonstration);
-  const std::string from = in.from;
-  s.problem_at = [task, robot, scene, demo, from](const Pose& base) {
-    Scene moved = *scene;
-    move_benchmark_robot(moved, robot, base);
-    auto at = std::make_shared<const Scene>(std::move(moved));
-    if (demo) return make_benchmark_instance(at, *demo).problem;
-    return make_benchmark_instance(*task, at, from == "raw" ? PoseSource::Raw : PoseSource::Subgoals).problem;
-  };
-  return s;
+  auto scene = benchmark_scene_with_handles(task, in.robot, in.pose, in.handles);
+  // The demonstration does not depend on where the robot stands: made once.
+  auto demo = std::make_shared<const Demonstration>(make_task_instance(task, scene, in.from).demonstration);
+  return {problem_at_base(scene, std::move(demo), robot), scene->robot.base};
 }
 
 Search cell_search(const TaskInputs& in) {
@@ -76,15 +49,8 @@ Search cell_search(const TaskInputs& in) {
   auto scene = load_cell_scene(in.cell, in.data_dir);
   if (!scene->robot.fixed_base)
     throw InputError(in.cell, "robot.mobile", "the robot is mobile: it drives to each pick, there is no base to place");
-  Search s;
-  s.reference = scene->robot.base;
-  const std::string demo = in.demo;
-  s.problem_at = [scene, demo](const Pose& base) {
-    Scene moved = *scene;
-    moved.robot.base = base;  // the user's pedestal moves with it
-    return cell_task_instance(std::make_shared<const Scene>(std::move(moved)), demo).problem;
-  };
-  return s;
+  auto demo = std::make_shared<const Demonstration>(cell_task_instance(scene, in.demo).demonstration);
+  return {problem_at_base(scene, std::move(demo), std::nullopt), scene->robot.base};
 }
 
 int run_place(PlaceOptions o) {

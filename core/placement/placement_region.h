@@ -22,6 +22,7 @@ struct PlacementRegion {
 struct BasePose {
   double x = 0, y = 0, z = 0, yaw = 0;
   Pose pose() const;  // translation (x, y, z), rotation yaw about z
+  bool operator==(const BasePose&) const = default;
 };
 
 // "x0:x1,y0:y1,yaw0:yaw1[,z0:z1]" (m, m, rad, m). Throws InputError("command line", argument, ...)

@@ -98,7 +98,14 @@ nlohmann::json placement_result_json(const PlacementResult& r) {
                    {"cancelled", r.cancelled},
                    {"wall_time_s", r.wall_time_s},
                    {"candidates", candidates}};
-  if (r.complete()) j["message"] = r.message();
+  if (r.complete()) {
+    // The candidates with a valid plan, best first: empty when nothing in the region works.
+    nlohmann::json ranking = nlohmann::json::array();
+    for (const auto& c : r.candidates)
+      if (c.success_rate() > 0) ranking.push_back(c.index);
+    j["ranking"] = ranking;
+    j["message"] = r.message();
+  }
   return j;
 }
 

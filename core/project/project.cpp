@@ -86,6 +86,11 @@ ResultSummary summarize(const PlanReport& report, const std::string& validated_a
 
 std::string SceneReference::describe() const {
   if (is_cell()) return fs::path(cell).filename().string();
+  if (base) {
+    char where[96];
+    std::snprintf(where, sizeof where, " at x %.3f, y %.3f, yaw %.0f deg", base->x, base->y, base->yaw * 180 / M_PI);
+    return task + ", " + robot + where;
+  }
   return task + ", " + robot + " pose " + std::to_string(pose);
 }
 
@@ -93,6 +98,8 @@ Json project_to_json(const Project& p, const std::string& file) {
   Json scene = p.scene.is_cell() ? Json{{"cell", to_stored(p.scene.cell, file)}}
                                  : Json{{"task", p.scene.task}, {"robot", p.scene.robot}, {"pose", p.scene.pose}};
   if (!p.scene.data_dir.empty()) scene["data_dir"] = to_stored(p.scene.data_dir, file);
+  if (p.scene.base && !p.scene.is_cell())
+    scene["base"] = {{"x", p.scene.base->x}, {"y", p.scene.base->y}, {"z", p.scene.base->z}, {"yaw", p.scene.base->yaw}};
   Json j{{"format", kProjectFormat},
          {"version", kProjectVersion},
          {"units", "metres, radians, seconds; paths relative to this file"},
@@ -120,6 +127,10 @@ Project project_from_json(const Json& json, const std::string& file) {
     p.scene.robot = scene["robot"].string();
     p.scene.pose = scene["pose"].integer();
     if (p.scene.pose < 0) scene["pose"].fail("must be >= 0");
+    if (scene.has("base")) {
+      const JsonField b = scene["base"];
+      p.scene.base = BasePose{b["x"].number(), b["y"].number(), b["z"].number(), b["yaw"].number()};
+    }
   }
   if (scene.has("data_dir")) p.scene.data_dir = from_stored(scene["data_dir"].string(), file);
   p.video = root.has("video") ? from_stored(root["video"].string(), file) : "";

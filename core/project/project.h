@@ -20,6 +20,7 @@
 
 #include "core/demo/demonstration.h"
 #include "core/io/json_file.h"
+#include "core/placement/placement_region.h"
 #include "core/planning/plan_job.h"
 #include "core/planning/planner_settings.h"
 
@@ -35,6 +36,9 @@ struct SceneReference {
   std::string robot = "panda";
   int pose = 0;
   std::string cell;  // absolute; when set, the scene is this cell file (docs/cell.md), not a task
+  // A task's robot stood where the operator chose (the placement search) instead of at `pose`:
+  // its support box is made for it (benchmark README 5.1). A cell keeps its base in the cell.
+  std::optional<BasePose> base;
   bool is_cell() const { return !cell.empty(); }
   std::string describe() const;  // "shelf_1, panda pose 0" or the cell file's name
   bool operator==(const SceneReference&) const = default;

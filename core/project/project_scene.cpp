@@ -15,7 +15,9 @@ ReferencedScene load_referenced_scene(const SceneReference& ref, const std::stri
     return out;
   }
   auto task = std::make_shared<const BenchmarkTask>(load_benchmark_task(dir, ref.task));
-  out.scene = std::make_shared<const Scene>(build_benchmark_scene(*task, ref.robot, ref.pose, options));
+  Scene scene = build_benchmark_scene(*task, ref.robot, ref.pose, options);
+  if (ref.base) move_benchmark_robot(scene, load_benchmark_robot(dir, ref.robot), ref.base->pose());
+  out.scene = std::make_shared<const Scene>(std::move(scene));
   out.task = std::move(task);
   return out;
 }

@@ -97,6 +97,23 @@ private:
   std::string before_, after_;
 };
 
+// A task's robot stood elsewhere: the scene reference and the scene built for it, before and after.
+class BaseCommand : public QUndoCommand {
+public:
+  struct State {
+    SceneReference ref;
+    std::shared_ptr<const Scene> scene;
+  };
+  BaseCommand(Document* doc, const QString& text, State before, State after)
+      : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)) {}
+  void redo() override { doc_->applySceneReference(after_.ref, after_.scene); }
+  void undo() override { doc_->applySceneReference(before_.ref, before_.scene); }
+
+private:
+  Document* doc_;
+  State before_, after_;
+};
+
 constexpr int kMergePose = 1;
 constexpr int kMergeConfidence = 2;
 
@@ -113,6 +130,7 @@ Document::Document(std::string default_data_dir, QObject* parent)
       part_cache_(std::make_unique<CellPartCache>()) {
   media_ = new Media(this);
   planning_ = new PlanningController(this);
+  placement_ = new PlacementSearchJob(this);
   detection_ = new EventDetection(this);
   track_detection_ = new TrackDetection(this);
   steps_ = new StepStatusModel(this);
@@ -359,6 +377,30 @@ void Document::applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, c
   emit sceneChanged();
   emit demonstrationChanged();
   emit selectionChanged();
+  emit displayChanged();
+}
+
+void Document::setRobotBase(const BasePose& base) {
+  const QString text = tr("Stand the robot at (%1, %2) m, %3°")
+                           .arg(base.x, 0, 'f', 2).arg(base.y, 0, 'f', 2).arg(base.yaw * 180 / M_PI, 0, 'f', 0);
+  if (cell_) {
+    Cell after = *cell_;
+    after.robot.base = base.pose();
+    editCell(after, text);
+    return;
+  }
+  SceneReference ref = scene_ref_;
+  ref.base = base;
+  std::shared_ptr<const Scene> scene;
+  std::shared_ptr<const BenchmarkTask> task;
+  loadScene(ref, scene, task);  // throws, changing nothing, for a robot that cannot be stood there
+  undo_.push(new BaseCommand(this, text, {scene_ref_, scene_}, {std::move(ref), std::move(scene)}));
+}
+
+void Document::applySceneReference(const SceneReference& ref, std::shared_ptr<const Scene> scene) {
+  scene_ref_ = ref;
+  scene_ = std::move(scene);
+  emit sceneChanged();
   emit displayChanged();
 }
 

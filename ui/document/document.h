@@ -18,6 +18,7 @@
 #include "core/project/project.h"
 #include "ui/document/event_detection.h"
 #include "ui/document/media.h"
+#include "ui/document/placement_search_job.h"
 #include "ui/document/planning_controller.h"
 #include "ui/document/step_status.h"
 #include "ui/document/track_detection.h"
@@ -37,6 +38,8 @@ public:
   TrackDetection* trackDetection() { return track_detection_; }
   PlanningController* planning() { return planning_; }
   const PlanningController* planning() const { return planning_; }
+  PlacementSearchJob* placement() { return placement_; }
+  const PlacementSearchJob* placement() const { return placement_; }
   StepStatusModel* steps() { return steps_; }
   const StepStatusModel* steps() const { return steps_; }
 
@@ -90,6 +93,12 @@ public:
   // How the document builds cell scenes: its data folder, visual meshes, and the caches shared
   // by every rebuild (meshes, and the parts' placements and handles).
   CellSceneOptions cellSceneOptions() const;
+  // Stands the robot at `base` (the placement search's choice), one undo step: a task's robot
+  // with its support box made for the new base, a cell's robot in the cell file. Throws
+  // InputError, changing nothing, for a mobile robot or a cell that cannot be written.
+  void setRobotBase(const BasePose& base);
+  // Used by the undo command of setRobotBase.
+  void applySceneReference(const SceneReference& ref, std::shared_ptr<const Scene> scene);
   // Used by the undo commands; `write`: the cell file does not hold `cell` yet.
   void applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, const Demonstration& demo, bool write);
 
@@ -183,6 +192,7 @@ private:
   Media* media_ = nullptr;
   int selected_furniture_ = -1;
   PlanningController* planning_ = nullptr;
+  PlacementSearchJob* placement_ = nullptr;
   EventDetection* detection_ = nullptr;
   TrackDetection* track_detection_ = nullptr;
   StepStatusModel* steps_ = nullptr;

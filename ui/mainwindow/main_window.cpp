@@ -40,6 +40,7 @@
 #include "ui/widgets/cell_panel.h"
 #include "ui/widgets/export_dialog.h"
 #include "ui/widgets/part_tracks_panel.h"
+#include "ui/widgets/placement_panel.h"
 #include "ui/widgets/planner_panel.h"
 #include "ui/widgets/pose_editor.h"
 #include "ui/widgets/result_panel.h"
@@ -196,6 +197,8 @@ void MainWindow::createDocks() {
         return;
       }
   });
+  placement_ = new PlacementPanel(doc_, this);
+  placement_dock_ = addDock(tr("Placement"), QStringLiteral("PlacementDock"), placement_, Qt::BottomDockWidgetArea);
   history_ = new QUndoView(doc_->undoStack(), this);
   history_->setEmptyLabel(tr("<opened>"));
   history_dock_ = addDock(tr("History"), QStringLiteral("HistoryDock"), history_, Qt::BottomDockWidgetArea);
@@ -204,7 +207,8 @@ void MainWindow::createDocks() {
   splitDockWidget(timeline_dock_, tracks_dock_, Qt::Vertical);
   splitDockWidget(inspector_dock_, planner_dock_, Qt::Horizontal);
   tabifyDockWidget(planner_dock_, result_dock_);
-  tabifyDockWidget(result_dock_, history_dock_);
+  tabifyDockWidget(result_dock_, placement_dock_);
+  tabifyDockWidget(placement_dock_, history_dock_);
   tabifyDockWidget(video_dock_, cell_dock_);
   planner_dock_->raise();
   video_dock_->raise();
@@ -344,7 +348,7 @@ void MainWindow::createActions() {
   path_view->setStatusTip(tr("Show the robot and the parts along the planned path"));
   view_menu_->addSeparator();
   for (QDockWidget* d : {video_dock_, cell_dock_, timeline_dock_, tracks_dock_, inspector_dock_, planner_dock_, result_dock_,
-                         history_dock_})
+                         placement_dock_, history_dock_})
     view_menu_->addAction(d->toggleViewAction());
   view_menu_->addSeparator();
   view_menu_->addAction(tr("&Reset Layout"), this, [this] { restoreState(default_state_); });
@@ -388,6 +392,11 @@ void MainWindow::createActions() {
   connect(doc_->planning()->runner(), &PlanRunner::started, this, [this] { cancel_action_->setEnabled(true); });
   connect(doc_->planning()->runner(), &PlanRunner::finished, this, [this] { cancel_action_->setEnabled(false); });
   connect(doc_->planning()->runner(), &PlanRunner::cancelled, this, [this] { cancel_action_->setEnabled(false); });
+  plan->addSeparator();
+  add(plan, tr("&Where to Put the Robot..."), QKeySequence(), [this] {
+    placement_dock_->show();
+    placement_dock_->raise();
+  })->setStatusTip(tr("Search the robot's base pose for this task: a heat map of cycle times (demoplan-cli place)"));
 
   // ---- Help
   QMenu* help = menuBar()->addMenu(tr("&Help"));

@@ -25,6 +25,7 @@ namespace demoplan::ui {
 class CellPanel;
 class ExportDialog;
 class PartTracksPanel;
+class PlacementPanel;
 class PlannerPanel;
 class PoseEditor;
 class ResultPanel;
@@ -55,6 +56,8 @@ public:
   QDockWidget* partTracksDock() const { return tracks_dock_; }
   PoseEditor* poseEditor() const { return pose_editor_; }
   PlannerPanel* plannerPanel() const { return planner_; }
+  PlacementPanel* placementPanel() const { return placement_; }
+  QDockWidget* placementDock() const { return placement_dock_; }
   ResultPanel* resultPanel() const { return result_; }
   VideoPanel* videoPanel() const { return video_; }
   StepBar* stepBar() const { return step_bar_; }
@@ -135,11 +138,12 @@ private:
   PoseEditor* pose_editor_ = nullptr;
   CellPanel* cell_panel_ = nullptr;
   PlannerPanel* planner_ = nullptr;
+  PlacementPanel* placement_ = nullptr;
   ResultPanel* result_ = nullptr;
   QUndoView* history_ = nullptr;
   StepBar* step_bar_ = nullptr;
   QDockWidget *video_dock_ = nullptr, *timeline_dock_ = nullptr, *inspector_dock_ = nullptr, *planner_dock_ = nullptr,
-              *result_dock_ = nullptr, *history_dock_ = nullptr,
+              *result_dock_ = nullptr, *history_dock_ = nullptr, *placement_dock_ = nullptr,
               *tracks_dock_ = nullptr, *cell_dock_ = nullptr;
   QMenu* recent_menu_ = nullptr;
   QMenu* view_menu_ = nullptr;

@@ -17,6 +17,8 @@
 #include "core/geometry/ray_box.h"
 #include "core/geometry/ray_triangle.h"
 #include "core/scene/support.h"
+#include "plot/axis.h"
+#include "plot/heat_map.h"
 #include "ui/document/demo_poses.h"
 #include "ui/widgets/style.h"
 
@@ -190,6 +192,8 @@ SceneView::SceneView(Document* doc, QWidget* parent) : QOpenGLWidget(parent), do
   connect(doc_, &Document::displayChanged, this, redraw);
   connect(doc_, &Document::selectionChanged, this, redraw);
   connect(doc_, &Document::demonstrationChanged, this, redraw);
+  connect(doc_->placement(), &PlacementSearchJob::candidateDone, this, &SceneView::rebuildPlacement);
+  connect(doc_->placement(), &PlacementSearchJob::cleared, this, &SceneView::rebuildPlacement);
   connect(doc_->planning(), &PlanningController::resultChanged, this, [this] {
     rebuildPathTrace();
     updateHud();
@@ -420,7 +424,8 @@ void SceneView::releaseGl() {
     delete g.texture;
   }
   gpu_meshes_.clear();
-  for (LineBuffer* b : {&grid_, &tree_lines_, &tree_points_, &root_points_, &root_outline_, &path_trace_, &gizmo_, &selection_, &supports_}) {
+  for (LineBuffer* b : {&grid_, &tree_lines_, &tree_points_, &root_points_, &root_outline_, &path_trace_, &gizmo_, &selection_,
+                        &supports_, &placement_squares_, &placement_ticks_}) {
     if (b->vao) glDeleteVertexArrays(1, &b->vao);
     if (b->vbo) glDeleteBuffers(1, &b->vbo);
     b->vao = b->vbo = 0;
@@ -589,6 +594,8 @@ void SceneView::paintGL() {
   glLineWidth(1.0f);
   drawLines(grid_, GL_LINES, 1, false, true);
   drawLines(supports_, GL_LINES, 1, false, true);
+  drawLines(placement_squares_, GL_POINTS, 13.0f, false, true);
+  drawLines(placement_ticks_, GL_LINES, 1, false, true);
   // While the path plays, the trees step back so the robot and the path stand out.
   const bool playing_path = doc_->displayMode() == Document::DisplayMode::Result && doc_->planning()->interpolator();
   const float tree_alpha = playing_path ? 0.12f : 1.0f;
@@ -715,6 +722,30 @@ void SceneView::rebuildPathTrace() {
     const SceneState st = interp->at(i / 400.0);
     pushPoint(path_trace_.data, toQt(gripper_pose(*scene_, st.q).translation()), QColor(0xff, 0x6d, 0x00));
   }
+}
+
+void SceneView::rebuildPlacement() {
+  // The placement search on the floor, as its heat map colours it: a square per candidate base
+  // pose (grey without a valid plan) and a tick along the way the robot would face.
+  placement_squares_.data.clear();
+  placement_ticks_.data.clear();
+  placement_squares_.dirty = placement_ticks_.dirty = true;
+  const auto& candidates = doc_->placement()->candidates();
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& c : candidates)
+    if (auto t = c.cycle_time_s()) lo = std::min(lo, *t), hi = std::max(hi, *t);
+  const plot::Ticks scale = std::isfinite(lo) ? plot::nice_ticks(lo, hi, 5) : plot::Ticks{};
+  for (const auto& c : candidates) {
+    const auto t = c.cycle_time_s();
+    const QColor color = t ? plot::sequential_color((*t - scale.min) / std::max(scale.max - scale.min, 1e-12))
+                           : QColor(0xc8, 0xc8, 0xc8);
+    const QVector3D at(float(c.base.x), float(c.base.y), 0.003f);
+    pushPoint(placement_squares_.data, at, color);
+    pushPoint(placement_ticks_.data, at, QColor(0x20, 0x20, 0x20));
+    pushPoint(placement_ticks_.data, at + 0.08f * QVector3D(float(std::cos(c.base.yaw)), float(std::sin(c.base.yaw)), 0),
+              QColor(0x20, 0x20, 0x20));
+  }
+  update();
 }
 
 void SceneView::setLightGeometry(bool on) {

@@ -49,6 +49,8 @@ public:
   void setShowTrees(bool on);
   size_t treeEdgeCount() const { return tree_edges_; }
   size_t treeRootCount() const { return tree_roots_; }
+  // Candidates of the placement search drawn on the floor.
+  size_t placementSquareCount() const { return placement_squares_.data.size() / 7; }
   // "OpenGL 4.5 (Core Profile) Mesa ..., llvmpipe" once initialised; empty before.
   QString glInfo() const { return gl_info_; }
   bool glFailed() const { return gl_failed_; }
@@ -115,6 +117,7 @@ private:
   void onPlanStarted();
   void onPlanProgress(const PlanSnapshot& s);
   void rebuildPathTrace();
+  void rebuildPlacement();
   void updateHud();
   // World transform of every item for the displayed state.
   std::vector<QMatrix4x4> itemTransforms() const;
@@ -140,7 +143,8 @@ private:
   bool gl_failed_ = false;
   QString gl_info_;
   std::unique_ptr<QOpenGLShaderProgram> mesh_program_, line_program_;
-  LineBuffer grid_, tree_lines_, tree_points_, root_points_, root_outline_, path_trace_, gizmo_, selection_, supports_;
+  LineBuffer grid_, tree_lines_, tree_points_, root_points_, root_outline_, path_trace_, gizmo_, selection_, supports_,
+      placement_squares_, placement_ticks_;
   size_t tree_edges_ = 0, tree_roots_ = 0;
   bool show_trees_ = true;
   bool fit_pending_ = true;
