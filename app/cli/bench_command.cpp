@@ -23,7 +23,7 @@
 #include "app/cli/task_inputs.h"
 #include "core/demo/benchmark_demonstration.h"
 #include "core/error.h"
-#include "core/placement/placement_region.h"
+#include "core/io/shards.h"
 #include "core/project/benchmark_instance.h"
 #include "core/planning/plan_job.h"
 #include "core/planning/planner_registry.h"

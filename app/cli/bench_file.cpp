@@ -11,6 +11,7 @@
 #include "app/cli/run_statistics.h"
 #include "core/error.h"
 #include "core/io/json_file.h"
+#include "core/io/shards.h"
 
 namespace demoplan::cli {
 
@@ -197,38 +198,19 @@ void save_bench_file(const std::string& file, const BenchFile& bench, const Benc
 }
 
 BenchFile merge_bench_files(const std::vector<std::string>& files) {
-  if (files.empty()) throw InputError("command line", "files", "no partial results given");
   BenchFile out;
-  std::map<int, std::string> shard_files;
-  std::vector<bool> seen;
+  ShardJoin join("benchmark");
   for (const std::string& file : files) {
     BenchFile part = load_bench_file(file);
-    if (shard_files.empty()) {
-      out.arguments = part.arguments;
-      out.run_count = part.run_count;
-      out.shards = part.shards;
-      seen.assign(out.run_count, false);
-    } else if (part.arguments != out.arguments || part.run_count != out.run_count || part.shards != out.shards) {
-      throw InputError(file, part.arguments != out.arguments ? "arguments" : "shard",
-                       "is from another benchmark than " + shard_files.begin()->second +
-                           " (different arguments or shard count)");
-    }
-    if (shard_files.count(part.shard))
-      throw InputError(file, "shard", "shard " + std::to_string(part.shard) + " is also in " + shard_files[part.shard]);
-    shard_files[part.shard] = file;
+    join.add(file, {part.arguments, static_cast<int>(part.run_count), part.shard, part.shards});
     for (BenchRun& r : part.runs) {
-      if (seen[r.index]) throw InputError(file, "runs", "run " + std::to_string(r.index) + " is in two files");
-      seen[r.index] = true;
+      join.claim(file, static_cast<int>(r.index), "runs");
       out.runs.push_back(std::move(r));
     }
   }
-  for (int s = 1; s <= out.shards; ++s)
-    if (!shard_files.count(s))
-      throw InputError(files.front(), "shard",
-                       "shard " + std::to_string(s) + " of " + std::to_string(out.shards) + " is missing");
-  if (out.runs.size() != out.run_count)
-    throw InputError(files.front(), "runs", std::to_string(out.runs.size()) + " of " + std::to_string(out.run_count) +
-                                                " runs in the shards");
+  join.finish("runs");
+  out.arguments = join.header().arguments;
+  out.run_count = static_cast<size_t>(join.header().items);
   std::sort(out.runs.begin(), out.runs.end(), [](const BenchRun& a, const BenchRun& b) { return a.index < b.index; });
   // An instance is assessed in every shard where one of its runs failed, with the same answer;
   // a shard whose runs of it all succeeded did not ask. One unsharded run applies the answer to

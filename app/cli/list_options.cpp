@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "core/placement/placement_region.h"
+#include "core/io/shards.h"
 
 namespace demoplan::cli {
 

@@ -10,6 +10,7 @@
 #include "app/cli/placement_summary.h"
 #include "app/cli/task_inputs.h"
 #include "core/error.h"
+#include "core/io/shards.h"
 #include "core/placement/placement_search.h"
 #include "core/project/placement_problem.h"
 #include "core/planning/planner_registry.h"
@@ -25,12 +26,14 @@ struct PlaceOptions {
   int samples = 50, jobs = 1;
   PlacementSettings placement;
   bool json = false;
+  bool published = false;
 };
 
 // The planning problem at any base pose, and the reference base the region's default z is from.
 struct Search {
   ProblemAtBase problem_at;
   Pose reference = Pose::Identity();
+  std::vector<std::pair<int, BasePose>> published;  // the task's own base poses, by id
 };
 
 Search benchmark_search(const TaskInputs& in) {
@@ -41,7 +44,12 @@ Search benchmark_search(const TaskInputs& in) {
   auto scene = benchmark_scene_with_handles(task, in.robot, in.pose, in.handles);
   // The demonstration does not depend on where the robot stands: made once.
   auto demo = std::make_shared<const Demonstration>(make_task_instance(task, scene, in.from).demonstration);
-  return {problem_at_base(scene, std::move(demo), robot), scene->robot.base};
+  Search s{problem_at_base(scene, std::move(demo), robot), scene->robot.base, {}};
+  for (int id : benchmark_pose_ids(task, in.robot)) {
+    const Pose p = benchmark_robot_pose(task, in.robot, id);
+    s.published.push_back({id, {p.translation().x(), p.translation().y(), p.translation().z(), std::atan2(p(1, 0), p(0, 0))}});
+  }
+  return s;
 }
 
 Search cell_search(const TaskInputs& in) {
@@ -50,7 +58,7 @@ Search cell_search(const TaskInputs& in) {
   if (!scene->robot.fixed_base)
     throw InputError(in.cell, "robot.mobile", "the robot is mobile: it drives to each pick, there is no base to place");
   auto demo = std::make_shared<const Demonstration>(cell_task_instance(scene, in.demo).demonstration);
-  return {problem_at_base(scene, std::move(demo), std::nullopt), scene->robot.base};
+  return {problem_at_base(scene, std::move(demo), std::nullopt), scene->robot.base, {}};
 }
 
 int run_place(PlaceOptions o) {
@@ -75,7 +83,7 @@ int run_place(PlaceOptions o) {
                            {"time_limit_s", o.settings.planner.time_limit},
                            {"shortcut_time_s", o.settings.shortcutting.time_limit},
                            {"screen_samples", o.placement.screen_samples},
-                           {"plan_rejected", o.placement.plan_rejected}});
+                           {"plan_rejected", o.placement.plan_rejected}, {"published", o.published}});
   const std::vector<BasePose> candidates = candidate_base_poses(region, o.samples, z);
   const std::vector<int> indices = shard_indices(o.samples, shard, shards);
   result.candidate_count = o.samples;
@@ -94,6 +102,12 @@ int run_place(PlaceOptions o) {
         else std::cerr << c.success_rate() * 100 << " % valid, cycle " << c.cycle_time_s().value_or(NAN) << " s";
         std::cerr << "\n";
       });
+  if (o.published && shard == 1) {
+    // The task's own base poses, judged alike: what the search is to beat.
+    if (search.published.empty()) throw InputError("command line", "--published", "a cell has no published base poses");
+    for (const auto& [id, base] : search.published)
+      result.published.push_back(evaluate_candidate(search.problem_at, id, base, o.placement));
+  }
   if (result.complete()) rank_candidates(result.candidates);
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!o.out.empty()) save_placement_result(o.out, result);
@@ -133,6 +147,8 @@ Command register_place_command(CLI::App& app) {
                   "samples per grasp or release in the screen")->check(CLI::PositiveNumber)->capture_default_str();
   sub->add_flag("--plan-rejected", opts->placement.plan_rejected,
                 "plan the candidates the screen rejected too (measures the screen)");
+  sub->add_flag("--published", opts->published,
+                "judge the task's published base poses alike, for comparison (on the heat map: red crosses)");
   sub->add_option("--jobs", opts->jobs, "candidates evaluated at once")->check(CLI::PositiveNumber)->capture_default_str();
   sub->add_option("--shard", opts->shard, "I/N: evaluate only the I-th of N slices; join them with merge")
       ->capture_default_str();

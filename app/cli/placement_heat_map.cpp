@@ -29,8 +29,10 @@ void write_placement_heat_map(const std::string& file, const PlacementResult& r)
   map.x0 = region.x.low, map.x1 = region.x.high, map.y0 = region.y.low, map.y1 = region.y.high;
   map.cell = 0.9 * std::sqrt((map.x1 - map.x0) * (map.y1 - map.y0) / std::max<size_t>(r.candidates.size(), 1));
   for (const PlacementCandidate& c : r.candidates)
-    map.samples.push_back({c.base.x, c.base.y, c.cycle_time_s().value_or(std::nan("")), c.base.yaw});
-  if (!r.candidates.empty() && r.candidates.front().cycle_time_s())
+    map.samples.push_back({c.base.x, c.base.y, c.usable() ? *c.cycle_time_s() : std::nan(""), c.base.yaw});
+  for (const PlacementCandidate& c : r.published) map.references.push_back({c.base.x, c.base.y});
+  map.references_label = QStringLiteral("published poses");
+  if (!r.candidates.empty() && r.candidates.front().usable())
     map.marked.push_back({r.candidates.front().base.x, r.candidates.front().base.y});
   const QString error = plot::save_figure(out, QSizeF(720, 560), map.title,
                                           [&](plot::Canvas& canvas) { draw_heat_map(canvas, QRectF(16, 16, 688, 528), map); });

@@ -92,6 +92,33 @@ std::vector<int> benchmark_pose_ids(const BenchmarkTask& task, const std::string
   return out;
 }
 
+namespace {
+// The task's pose file for the robot, read, and the key of `pose_id` in it (checked).
+std::pair<Json, std::string> pose_file_entry(const BenchmarkTask& task, const std::string& robot_name, int pose_id) {
+  auto pose_file = task.robot_pose_files.find(robot_name);
+  if (pose_file == task.robot_pose_files.end()) {
+    std::string known;
+    for (const auto& [k, _] : task.robot_pose_files) known += (known.empty() ? "" : ", ") + k;
+    throw InputError(task.file, "robot_poses", "task has no poses for robot '" + robot_name +
+                                                   "' (it has: " + known + ")");
+  }
+  Json json = read_json_file(pose_file->second);
+  const JsonField poses(json, pose_file->second);
+  const std::string key = std::to_string(pose_id);
+  if (!poses["poses"].has(key)) {
+    std::string known;
+    for (const auto& [k, _] : poses["poses"].value().items()) known += (known.empty() ? "" : ", ") + k;
+    poses["poses"].fail("no robot pose id " + key + " (available: " + known + ")");
+  }
+  return {std::move(json), key};
+}
+}  // namespace
+
+Pose benchmark_robot_pose(const BenchmarkTask& task, const std::string& robot, int pose_id) {
+  const auto [json, key] = pose_file_entry(task, robot, pose_id);
+  return JsonField(json, task.robot_pose_files.at(robot))["poses"][key].pose();
+}
+
 Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_name, int pose_id,
                             const SceneLoadOptions& options) {
   Scene scene;
@@ -102,21 +129,8 @@ Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_
 
   // Robot.
   const BenchmarkRobot info = load_benchmark_robot(task.data_dir, robot_name);
-  auto pose_file = task.robot_pose_files.find(robot_name);
-  if (pose_file == task.robot_pose_files.end()) {
-    std::string known;
-    for (const auto& [k, _] : task.robot_pose_files) known += (known.empty() ? "" : ", ") + k;
-    throw InputError(task.file, "robot_poses", "task has no poses for robot '" + robot_name +
-                                                   "' (it has: " + known + ")");
-  }
-  const Json poses_json = read_json_file(pose_file->second);
-  const JsonField poses(poses_json, pose_file->second);
-  const std::string key = std::to_string(pose_id);
-  if (!poses["poses"].has(key)) {
-    std::string known;
-    for (const auto& [k, _] : poses["poses"].value().items()) known += (known.empty() ? "" : ", ") + k;
-    poses["poses"].fail("no robot pose id " + key + " (available: " + known + ")");
-  }
+  const auto [poses_json, key] = pose_file_entry(task, robot_name, pose_id);
+  const JsonField poses(poses_json, task.robot_pose_files.at(robot_name));
   SceneRobot& robot = scene.robot;
   robot.name = robot_name;
   robot.model = load_urdf(info.urdf, urdf_options);

@@ -30,6 +30,9 @@ struct SceneLoadOptions {
   MeshCache* mesh_cache = nullptr;
 };
 
+// The robot base pose `pose_id` of the task's pose file for `robot`. Throws InputError.
+Pose benchmark_robot_pose(const BenchmarkTask& task, const std::string& robot, int pose_id);
+
 // The robot at the pose `pose_id` of the task's pose file, the task's furniture plus the support
 // box under a fixed robot, and the task's planning objects (trays excluded). Throws InputError.
 Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot, int pose_id,

@@ -37,6 +37,8 @@ struct PlacementCandidate {
   std::vector<PlacementRun> runs;  // one per seed, when feasible (or when planning was forced)
 
   double success_rate() const;  // valid runs / runs; 0 without runs
+  // The robot can stand here and do the task: it passed the screen and a plan was found.
+  bool usable() const { return feasible && success_rate() > 0; }
   double median_time_s() const; // planning time over all runs; 0 without runs
   // The shortest cycle time of a valid run: the program one would export.
   std::optional<double> cycle_time_s() const;
@@ -61,8 +63,9 @@ PlacementCandidate evaluate_candidate(const ProblemAtBase& problem_at, int index
 // The screen alone: "" when the candidate passes, else the reason.
 std::string screen_candidate(const PlanningProblem& problem, int samples);
 
-// Best first: the highest success rate, then the shortest cycle time, then the index (so equal
-// candidates keep one order whichever machine or shard evaluated them).
+// Best first: those that pass the screen, then the highest success rate, then the shortest cycle
+// time, then the index (so equal candidates keep one order whichever machine or shard evaluated
+// them).
 void rank_candidates(std::vector<PlacementCandidate>& candidates);
 
 }  // namespace demoplan

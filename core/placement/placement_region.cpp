@@ -97,13 +97,4 @@ std::vector<BasePose> candidate_base_poses(const PlacementRegion& r, int samples
   return out;
 }
 
-std::vector<int> shard_indices(int count, int shard, int shards) {
-  if (shards < 1 || shard < 1 || shard > shards)
-    throw InputError("command line", "--shard",
-                     std::to_string(shard) + "/" + std::to_string(shards) + " is not I/N with 1 <= I <= N");
-  std::vector<int> out;
-  for (int i = shard - 1; i < count; i += shards) out.push_back(i);
-  return out;
-}
-
 }  // namespace demoplan

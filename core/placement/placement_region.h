@@ -34,8 +34,4 @@ std::string to_string(const PlacementRegion& region);
 // any prefix as even as the whole, the same for the same arguments on every machine.
 std::vector<BasePose> candidate_base_poses(const PlacementRegion& region, int samples, double default_z);
 
-// The indices of 0..count-1 that shard `shard` of `shards` (1-based) evaluates: every shards-th,
-// so each shard gets a like share of the region. Throws InputError for a shard out of range.
-std::vector<int> shard_indices(int count, int shard, int shards);
-
 }  // namespace demoplan

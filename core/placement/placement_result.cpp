@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <map>
-#include <set>
 
 #include "core/error.h"
 #include "core/io/json_file.h"
+#include "core/io/shards.h"
 
 namespace demoplan {
 
@@ -69,7 +69,7 @@ int PlacementResult::feasible_count() const {
 std::string PlacementResult::message() const {
   if (!complete()) return "";
   for (const auto& c : candidates)
-    if (c.success_rate() > 0) return "";
+    if (c.usable()) return "";
   const size_t n = candidates.size();
   if (feasible_count() > 0)
     return std::to_string(feasible_count()) + " of " + std::to_string(n) +
@@ -86,8 +86,9 @@ std::string PlacementResult::message() const {
 }
 
 nlohmann::json placement_result_json(const PlacementResult& r) {
-  nlohmann::json candidates = nlohmann::json::array();
+  nlohmann::json candidates = nlohmann::json::array(), published = nlohmann::json::array();
   for (const auto& c : r.candidates) candidates.push_back(candidate_json(c));
+  for (const auto& c : r.published) published.push_back(candidate_json(c));
   nlohmann::json j{{"format", kFormat},
                    {"version", kVersion},
                    {"arguments", r.arguments},
@@ -97,12 +98,13 @@ nlohmann::json placement_result_json(const PlacementResult& r) {
                    {"feasible", r.feasible_count()},
                    {"cancelled", r.cancelled},
                    {"wall_time_s", r.wall_time_s},
-                   {"candidates", candidates}};
+                   {"candidates", candidates},
+                   {"published", published}};
   if (r.complete()) {
     // The candidates with a valid plan, best first: empty when nothing in the region works.
     nlohmann::json ranking = nlohmann::json::array();
     for (const auto& c : r.candidates)
-      if (c.success_rate() > 0) ranking.push_back(c.index);
+      if (c.usable()) ranking.push_back(c.index);
     j["ranking"] = ranking;
     j["message"] = r.message();
   }
@@ -125,6 +127,8 @@ PlacementResult load_placement_result(const std::string& file) {
   if (r.shards < 1 || r.shard < 1 || r.shard > r.shards) root["shard"].fail("index must be within 1..count");
   r.wall_time_s = root["wall_time_s"].number();
   r.cancelled = root["cancelled"].boolean();
+  if (root.has("published"))
+    for (size_t i = 0; i < root["published"].size(); ++i) r.published.push_back(read_candidate(root["published"][i]));
   const JsonField candidates = root["candidates"];
   for (size_t i = 0; i < candidates.size(); ++i) {
     r.candidates.push_back(read_candidate(candidates[i]));
@@ -135,40 +139,20 @@ PlacementResult load_placement_result(const std::string& file) {
 }
 
 PlacementResult merge_placement_results(const std::vector<std::string>& files) {
-  if (files.empty()) throw InputError("command line", "files", "no partial results given");
   PlacementResult out;
-  std::map<int, std::string> shard_files;
-  std::set<int> seen;
+  ShardJoin join("search");
   for (const std::string& file : files) {
     PlacementResult part = load_placement_result(file);
-    if (shard_files.empty()) {
-      out.arguments = part.arguments;
-      out.candidate_count = part.candidate_count;
-      out.shards = part.shards;
-    } else if (part.arguments != out.arguments || part.candidate_count != out.candidate_count ||
-               part.shards != out.shards) {
-      throw InputError(file, part.arguments != out.arguments ? "arguments" : "shard",
-                       "is from another search than " + shard_files.begin()->second +
-                           " (different arguments or shard count)");
-    }
-    if (shard_files.count(part.shard))
-      throw InputError(file, "shard", "shard " + std::to_string(part.shard) + " is also in " + shard_files[part.shard]);
+    join.add(file, {part.arguments, part.candidate_count, part.shard, part.shards});
     if (part.cancelled) throw InputError(file, "cancelled", "this shard was cancelled before it finished");
-    shard_files[part.shard] = file;
-    for (auto& c : part.candidates)
-      if (!seen.insert(c.index).second)
-        throw InputError(file, "candidates", "candidate " + std::to_string(c.index) + " is in two files");
+    for (const auto& c : part.candidates) join.claim(file, c.index, "candidates");
     out.wall_time_s = std::max(out.wall_time_s, part.wall_time_s);
+    if (!part.published.empty()) out.published = std::move(part.published);
     std::move(part.candidates.begin(), part.candidates.end(), std::back_inserter(out.candidates));
   }
-  for (int s = 1; s <= out.shards; ++s)
-    if (!shard_files.count(s))
-      throw InputError(files.front(), "shard", "shard " + std::to_string(s) + " of " + std::to_string(out.shards) +
-                                                   " is missing");
-  if (static_cast<int>(out.candidates.size()) != out.candidate_count)
-    throw InputError(files.front(), "candidates", std::to_string(out.candidates.size()) + " of " +
-                                                      std::to_string(out.candidate_count) + " candidates in the shards");
-  out.shard = out.shards = 1;
+  join.finish("candidates");
+  out.arguments = join.header().arguments;
+  out.candidate_count = join.header().items;
   rank_candidates(out.candidates);
   return out;
 }

@@ -19,6 +19,9 @@ struct PlacementResult {
   int candidate_count = 0;  // in the whole search
   int shard = 1, shards = 1;  // 1 of 1: every candidate
   std::vector<PlacementCandidate> candidates;  // ranked in a complete result
+  // The task's published base poses judged alike, for comparison (index: the pose id); only the
+  // first shard evaluates them.
+  std::vector<PlacementCandidate> published;
   double wall_time_s = 0;  // the run's; a merged result: the longest shard's
   bool cancelled = false;
 

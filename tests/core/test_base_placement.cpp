@@ -10,6 +10,7 @@
 #include "core/demo/benchmark_scene.h"
 #include "core/error.h"
 #include "core/io/json_file.h"
+#include "core/io/shards.h"
 #include "core/placement/base_clearance.h"
 #include "core/placement/placement_result.h"
 #include "core/placement/placement_search.h"
@@ -216,4 +217,20 @@ TEST(BasePlacement, ARegionWhereNothingFitsSaysWhy) {
   EXPECT_NE(r.message().find("pick 1 (YCBV_05) cannot be done"), std::string::npos);
   r.candidates[1] = candidate(1, 1.0, 8.0);
   EXPECT_EQ(r.message(), "");
+}
+
+TEST(BasePlacement, ABaseThatDoesNotFitRanksLastEvenWhenPlannedValid) {
+  // --plan-rejected plans rejected candidates too; the planner never checks the base against the
+  // furniture, so a base inside the shelf can get valid plans. It must not be recommended.
+  PlacementCandidate inside = candidate(0, 1.0, 5.0);
+  inside.feasible = false;
+  inside.reason = "the robot's panda_link0 is inside shelf_1_1_shelf/top_desk";
+  std::vector<PlacementCandidate> all{inside, candidate(1, 0.5, 12.0)};
+  rank_candidates(all);
+  EXPECT_EQ(all.front().index, 1);
+  EXPECT_FALSE(all.back().usable());
+  PlacementResult r;
+  r.candidate_count = 2;
+  r.candidates = all;
+  EXPECT_EQ(placement_result_json(r)["ranking"], nlohmann::json::array({1}));
 }

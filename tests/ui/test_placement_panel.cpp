@@ -72,8 +72,16 @@ private slots:
       }
     panel.mapView()->choose(chosen);
 
-    // Stand the robot there: it moves, the planner runs and finds a valid path from there.
-    QTest::mouseClick(panel.standButton(), Qt::LeftButton);
+    // A double click on the best square stands the robot there: it moves, the planner runs and
+    // finds a valid path from there.
+    std::vector<QPoint> hits;  // pixels of its square, found through the view's own hit test
+    for (int y = 0; y < panel.mapView()->height(); y += 2)
+      for (int x = 0; x < panel.mapView()->width(); x += 2)
+        if (panel.mapView()->candidateAt(QPointF(x, y)) == chosen) hits.emplace_back(x, y);
+    QVERIFY(!hits.empty());
+    const QPoint square = hits[hits.size() / 2];
+    QVERIFY(panel.mapView()->candidateAt(square) == chosen);
+    QTest::mouseDClick(panel.mapView(), Qt::LeftButton, Qt::NoModifier, square);
     QVERIFY((doc.scene().robot.base.translation() - best->base.pose().translation()).norm() < 1e-12);
     QVERIFY(doc.sceneReference().base.has_value());
     QVERIFY(test::waitFor([&] { return !doc.planning()->isRunning() && doc.planning()->result(); }, 120000));

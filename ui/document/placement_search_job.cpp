@@ -29,7 +29,7 @@ void PlacementSearchJob::setSettings(const PlacementSearchSettings& settings) { 
 const PlacementCandidate* PlacementSearchJob::best() const {
   const PlacementCandidate* best = nullptr;
   for (const auto& c : candidates_) {
-    if (c.success_rate() == 0) continue;
+    if (!c.usable()) continue;
     std::vector<PlacementCandidate> two{c};
     if (best) two.push_back(*best);
     rank_candidates(two);

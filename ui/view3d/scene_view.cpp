@@ -733,10 +733,10 @@ void SceneView::rebuildPlacement() {
   const auto& candidates = doc_->placement()->candidates();
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const auto& c : candidates)
-    if (auto t = c.cycle_time_s()) lo = std::min(lo, *t), hi = std::max(hi, *t);
+    if (c.usable()) lo = std::min(lo, *c.cycle_time_s()), hi = std::max(hi, *c.cycle_time_s());
   const plot::Ticks scale = std::isfinite(lo) ? plot::nice_ticks(lo, hi, 5) : plot::Ticks{};
   for (const auto& c : candidates) {
-    const auto t = c.cycle_time_s();
+    const auto t = c.usable() ? c.cycle_time_s() : std::nullopt;
     const QColor color = t ? plot::sequential_color((*t - scale.min) / std::max(scale.max - scale.min, 1e-12))
                            : QColor(0xc8, 0xc8, 0xc8);
     const QVector3D at(float(c.base.x), float(c.base.y), 0.003f);

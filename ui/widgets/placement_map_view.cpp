@@ -35,7 +35,7 @@ plot::HeatMap PlacementMapView::map() const {
   const int n = std::max(doc_->placement()->total(), 1);
   m.cell = 0.9 * std::sqrt((m.x1 - m.x0) * (m.y1 - m.y0) / n);
   for (const PlacementCandidate& c : doc_->placement()->candidates())
-    m.samples.push_back({c.base.x, c.base.y, c.cycle_time_s().value_or(std::nan("")), c.base.yaw});
+    m.samples.push_back({c.base.x, c.base.y, c.usable() ? *c.cycle_time_s() : std::nan(""), c.base.yaw});
   const auto& candidates = doc_->placement()->candidates();
   if (chosen_ >= 0 && chosen_ < static_cast<int>(candidates.size()))
     m.marked.push_back({candidates[static_cast<size_t>(chosen_)].base.x, candidates[static_cast<size_t>(chosen_)].base.y});
@@ -80,6 +80,13 @@ void PlacementMapView::paintEvent(QPaintEvent*) {
 
 void PlacementMapView::mousePressEvent(QMouseEvent* e) {
   if (e->button() == Qt::LeftButton) choose(candidateAt(e->position()));
+}
+
+void PlacementMapView::mouseDoubleClickEvent(QMouseEvent* e) {
+  const int k = candidateAt(e->position());
+  if (e->button() != Qt::LeftButton || k < 0) return;
+  choose(k);
+  emit standRequested(k);
 }
 
 bool PlacementMapView::event(QEvent* e) {

@@ -2,7 +2,8 @@
 // The placement search's heat map in the Placement panel (plot/heat_map.h, as the CLI draws it):
 // each candidate base pose a square at its place, coloured by its cycle time, grey without a
 // valid plan, a tick along its yaw; the robot's base crossed, the best ringed. Hovering tells a
-// candidate's numbers or why it cannot be used; a click chooses it.
+// candidate's numbers or why it cannot be used; a click chooses it, a double click stands the
+// robot there.
 #include <QWidget>
 
 #include "plot/heat_map.h"
@@ -24,10 +25,13 @@ public:
 
 signals:
   void chosenChanged(int candidate);
+  // A double click: stand the robot on this candidate.
+  void standRequested(int candidate);
 
 protected:
   void paintEvent(QPaintEvent*) override;
   void mousePressEvent(QMouseEvent*) override;
+  void mouseDoubleClickEvent(QMouseEvent*) override;
   bool event(QEvent*) override;
 
 private:

@@ -83,7 +83,7 @@ PlacementPanel::PlacementPanel(Document* doc, QWidget* parent) : QWidget(parent)
   summary_ = new QLabel(this);
   summary_->setWordWrap(true);
   left->addWidget(summary_);
-  chosen_ = new QLabel(tr("Click a square of the map to choose a base pose."), this);
+  chosen_ = new QLabel(tr("Click a square of the map to choose a base pose (double-click: stand the robot there)."), this);
   chosen_->setWordWrap(true);
   chosen_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   left->addWidget(chosen_);
@@ -103,6 +103,9 @@ PlacementPanel::PlacementPanel(Document* doc, QWidget* parent) : QWidget(parent)
   connect(cancel_, &QPushButton::clicked, this, &PlacementPanel::cancel);
   connect(stand_, &QPushButton::clicked, this, &PlacementPanel::standAtChosen);
   connect(map_, &PlacementMapView::chosenChanged, this, &PlacementPanel::refreshChosen);
+  connect(map_, &PlacementMapView::standRequested, this, [this] {
+    if (stand_->isEnabled()) standAtChosen();
+  });
   PlacementSearchJob* job = doc->placement();
   connect(job, &PlacementSearchJob::candidateDone, this, [this](int done, int total) {
     progress_->setRange(0, total);
@@ -207,7 +210,7 @@ void PlacementPanel::refreshSummary() {
     return;
   }
   int feasible = 0, planned = 0;
-  for (const auto& c : all) feasible += c.feasible, planned += c.success_rate() > 0;
+  for (const auto& c : all) feasible += c.feasible, planned += c.usable();
   QString text = tr("%1 of %2 candidates: %3 pass the screen, %4 with a valid plan.")
                      .arg(all.size()).arg(job->total()).arg(feasible).arg(planned);
   if (const PlacementCandidate* best = job->best())
@@ -221,10 +224,12 @@ void PlacementPanel::refreshSummary() {
 
 void PlacementPanel::refreshChosen() {
   const QString text = map_->describe(map_->chosen());
-  chosen_->setText(text.isEmpty() ? tr("Click a square of the map to choose a base pose.") : text);
+  chosen_->setText(text.isEmpty() ? tr("Click a square of the map to choose a base pose (double-click: stand the robot "
+                                       "there).")
+                                    : text);
   const auto& all = doc_->placement()->candidates();
   const int k = map_->chosen();
-  stand_->setEnabled(k >= 0 && k < static_cast<int>(all.size()) && all[static_cast<size_t>(k)].success_rate() > 0);
+  stand_->setEnabled(k >= 0 && k < static_cast<int>(all.size()) && all[static_cast<size_t>(k)].usable());
 }
 
 }  // namespace demoplan::ui
