@@ -24,6 +24,7 @@
 #include "core/demo/benchmark_demonstration.h"
 #include "core/error.h"
 #include "core/io/shards.h"
+#include "core/parallel_for.h"
 #include "core/project/benchmark_instance.h"
 #include "core/planning/plan_job.h"
 #include "core/planning/planner_registry.h"
@@ -171,55 +172,48 @@ int run_bench(const BenchOptions& o) {
   std::cerr << " runs";
   if (shards > 1) std::cerr << " (shard " << shard << "/" << shards << ")";
   std::cerr << " on " << instances.size() << " task instances, " << o.jobs << " job(s)\n";
-  std::mutex mutex;
-  size_t next = 0, done = 0;
-  auto worker = [&] {
-    while (true) {
-      size_t i;
-      {
-        std::lock_guard lock(mutex);
-        if (next >= bench.runs.size()) return;
-        i = next++;
-      }
-      BenchRun& r = bench.runs[i];
-      Instance& in = *instances.at({r.task, r.robot, r.pose});
-      PlannerSettings settings;
-      settings.planner_name = r.planner;
-      settings.planner.seed = static_cast<std::uint64_t>(r.seed);
-      settings.planner.time_limit = r.time_limit;
-      const PlanReport s = run_plan_job(in.problem, settings, {}, nullptr, {.assess_on_failure = false});
-      r.solved = s.plan.solved;
-      r.time_s = s.plan.planning_time_s;
-      r.iterations = s.plan.iterations;
-      r.trees = s.plan.trees;
-      r.nodes = s.plan.nodes;
-      r.message = s.plan.message;
-      r.regrasp = s.plan.regrasp;
-      if (!r.solved)
-        std::call_once(in.assessed, [&] {
-          PlannerSettings once = settings;
-          once.planner.seed = 1;  // the same answer whichever run fails first
-          const FeasibilityReport f = assess_problem(in.problem, once);
-          in.infeasible = !f.feasible();
-          in.infeasible_reason = f.summary(*in.problem.scene);
-        });
-      if (r.solved) {
-        r.raw = s.planner_validation;
-        r.shortcut_s = s.shortcut.time_s;
-        r.shortened = s.validation;  // the planner's own path when the shortened one was dropped
-      }
-      std::lock_guard lock(mutex);
-      ++done;
-      std::cerr << "[" << done << "/" << bench.runs.size() << "] " << r.task << " " << r.robot << " pose " << r.pose
-                << " seed " << r.seed << (planners.size() > 1 ? " " + r.planner : "") << ": "
-                << (r.solved ? (r.raw.valid ? "valid" : "INVALID (" + r.raw.message + ")") : "not solved (" + r.message + ")")
-                << ", " << std::fixed << std::setprecision(2) << r.time_s << " s\n" << std::defaultfloat;
-      if (!r.solved && in.infeasible) std::cerr << "    infeasible: " << in.infeasible_reason;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int j = 0; j < std::max(1, o.jobs); ++j) pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
+  size_t done = 0;
+  parallel_for(
+      bench.runs.size(), o.jobs,
+      [&](size_t i) {
+        BenchRun& r = bench.runs[i];
+        Instance& in = *instances.at({r.task, r.robot, r.pose});
+        PlannerSettings settings;
+        settings.planner_name = r.planner;
+        settings.planner.seed = static_cast<std::uint64_t>(r.seed);
+        settings.planner.time_limit = r.time_limit;
+        const PlanReport s = run_plan_job(in.problem, settings, {}, nullptr, {.assess_on_failure = false});
+        r.solved = s.plan.solved;
+        r.time_s = s.plan.planning_time_s;
+        r.iterations = s.plan.iterations;
+        r.trees = s.plan.trees;
+        r.nodes = s.plan.nodes;
+        r.message = s.plan.message;
+        r.regrasp = s.plan.regrasp;
+        if (!r.solved)
+          std::call_once(in.assessed, [&] {
+            PlannerSettings once = settings;
+            once.planner.seed = 1;  // the same answer whichever run fails first
+            const FeasibilityReport f = assess_problem(in.problem, once);
+            in.infeasible = !f.feasible();
+            in.infeasible_reason = f.summary(*in.problem.scene);
+          });
+        if (r.solved) {
+          r.raw = s.planner_validation;
+          r.shortcut_s = s.shortcut.time_s;
+          r.shortened = s.validation;  // the planner's own path when the shortened one was dropped
+        }
+      },
+      [&](size_t i) {
+        const BenchRun& r = bench.runs[i];
+        const Instance& in = *instances.at({r.task, r.robot, r.pose});
+        ++done;
+        std::cerr << "[" << done << "/" << bench.runs.size() << "] " << r.task << " " << r.robot << " pose " << r.pose
+                  << " seed " << r.seed << (planners.size() > 1 ? " " + r.planner : "") << ": "
+                  << (r.solved ? (r.raw.valid ? "valid" : "INVALID (" + r.raw.message + ")") : "not solved (" + r.message + ")")
+                  << ", " << std::fixed << std::setprecision(2) << r.time_s << " s\n" << std::defaultfloat;
+        if (!r.solved && in.infeasible) std::cerr << "    infeasible: " << in.infeasible_reason;
+      });
   for (BenchRun& r : bench.runs) r.feasible = !instances.at({r.task, r.robot, r.pose})->infeasible;
   const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 

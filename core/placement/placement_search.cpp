@@ -1,8 +1,6 @@
 #include "core/placement/placement_search.h"
 
-#include <algorithm>
-#include <mutex>
-#include <thread>
+#include "core/parallel_for.h"
 
 namespace demoplan {
 
@@ -16,28 +14,14 @@ std::vector<PlacementCandidate> run_placement_search(const ProblemAtBase& proble
     out[k].index = indices[k];
     out[k].base = candidates.at(static_cast<size_t>(indices[k]));
   }
-  std::mutex mutex;
-  size_t next = 0, done = 0;
-  auto worker = [&] {
-    while (true) {
-      size_t k;
-      {
-        std::lock_guard lock(mutex);
-        if (next >= indices.size() || (cancel && cancel->load())) return;
-        k = next++;
-      }
-      PlacementCandidate c = evaluate_candidate(problem_at, out[k].index, out[k].base, settings, cancel);
-      std::lock_guard lock(mutex);
-      out[k] = std::move(c);
-      ++done;
-      if (on_done) on_done(out[k], done, indices.size());
-    }
-  };
-  const int threads = std::clamp(jobs, 1, static_cast<int>(std::max<size_t>(indices.size(), 1)));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  size_t done = 0;
+  parallel_for(
+      indices.size(), jobs,
+      [&](size_t k) { out[k] = evaluate_candidate(problem_at, out[k].index, out[k].base, settings, cancel); },
+      [&](size_t k) {
+        if (on_done) on_done(out[k], ++done, indices.size());
+      },
+      cancel);
   return out;
 }
 
