@@ -1,7 +1,8 @@
 #pragma once
 // The placement search's planning problem: a demonstration with the scene's robot stood at any
 // base pose. A benchmark robot gets its support box made again for the new base; a cell's robot
-// is moved alone (its pedestal is the user's, part of the robot or the furniture).
+// takes its pedestal along (robot_pedestal), or stands alone where it stood on a table or the
+// floor.
 #include <memory>
 #include <optional>
 

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <set>
 
+#include "core/cell/cell.h"
+#include "core/cell/cell_picks.h"
+#include "core/cell/cell_scene.h"
 #include "core/demo/benchmark_demonstration.h"
 #include "core/demo/benchmark_scene.h"
 #include "core/error.h"
@@ -15,6 +18,7 @@
 #include "core/placement/placement_result.h"
 #include "core/placement/placement_search.h"
 #include "core/project/benchmark_instance.h"
+#include "core/project/placement_problem.h"
 #include "tests/support/temp_folder.h"
 
 using namespace demoplan;
@@ -233,4 +237,32 @@ TEST(BasePlacement, ABaseThatDoesNotFitRanksLastEvenWhenPlannedValid) {
   r.candidate_count = 2;
   r.candidates = all;
   EXPECT_EQ(placement_result_json(r)["ranking"], nlohmann::json::array({1}));
+}
+
+TEST(BasePlacement, ACellsRobotTakesItsPedestalAlongAndNeverFloats) {
+  // ur5_workbench: the UR5 on a 0.75 m pedestal beside the workbench the parts rest on.
+  const Cell cell = load_cell(kData + "/../cells/ur5_workbench.json");
+  const auto scene = std::make_shared<const Scene>(build_cell_scene(cell, {.data_dir = kData}));
+  const int pedestal = robot_pedestal(*scene);
+  ASSERT_GE(pedestal, 0);
+  EXPECT_EQ(scene->furniture[static_cast<size_t>(pedestal)].name, "pedestal");
+  EXPECT_EQ(base_clearance(*scene), "");
+  const SceneState start = cell_start_state(cell, *scene);
+  const RandomPickReport picks = random_picks(*scene, start, 1, 1);
+  ASSERT_EQ(picks.picks.size(), 1u) << picks.failure;
+  const auto demo = std::make_shared<const Demonstration>(demonstration_from_picks(*scene, start, picks.picks, "one pick"));
+  const BasePose there{-0.1, 0.2, 0.75, 0.7};  // back from the workbench, turned
+  const PlanningProblem problem = problem_at_base(scene, demo, std::nullopt)(there.pose());
+  const Scene& moved = *problem.scene;
+  EXPECT_EQ(base_clearance(moved), "");
+  EXPECT_NEAR((moved.furniture[static_cast<size_t>(pedestal)].link_poses[0].translation() -
+               Eigen::Vector3d(-0.1, 0.2, 0.375)).norm(), 0.0, 1e-9);
+  EXPECT_NEAR((moved.robot.base.translation() - Eigen::Vector3d(-0.1, 0.2, 0.75)).norm(), 0.0, 1e-12);
+  EXPECT_EQ(moved.furniture[1].link_poses[0].translation(), scene->furniture[1].link_poses[0].translation());  // the workbench stays
+  // Without its pedestal the robot would hang in the air; inside the workbench it does not fit.
+  Scene floating = *scene;
+  floating.robot.base = there.pose();
+  EXPECT_NE(base_clearance(floating).find("stands on nothing"), std::string::npos) << base_clearance(floating);
+  const PlanningProblem into = problem_at_base(scene, demo, std::nullopt)(BasePose{0.55, 0.0, 0.75, 0.0}.pose());
+  EXPECT_NE(base_clearance(*into.scene).find("inside workbench"), std::string::npos) << base_clearance(*into.scene);
 }

@@ -10,6 +10,8 @@
 #include "core/cell/cell_scene.h"
 #include "core/error.h"
 #include "core/project/new_project.h"
+#include "core/placement/base_clearance.h"
+#include "core/project/placement_problem.h"
 #include "core/project/project_scene.h"
 #include "perception/camera/camera_model.h"
 #include "perception/video/video_reader.h"
@@ -385,6 +387,11 @@ void Document::setRobotBase(const BasePose& base) {
                            .arg(base.x, 0, 'f', 2).arg(base.y, 0, 'f', 2).arg(base.yaw * 180 / M_PI, 0, 'f', 0);
   if (cell_) {
     Cell after = *cell_;
+    // The pedestal goes with the robot (scene furniture i is the cell's furniture i).
+    if (const int pedestal = robot_pedestal(*scene_); pedestal >= 0) {
+      Pose& pose = after.furniture[static_cast<size_t>(pedestal)].pose;
+      pose = base.pose() * after.robot.base.inverse() * pose;
+    }
     after.robot.base = base.pose();
     editCell(after, text);
     return;
