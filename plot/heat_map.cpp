@@ -106,6 +106,15 @@ void draw_heat_map(Canvas& canvas, const QRectF& area, const HeatMap& map) {
       }
     }
   canvas.endGroup();
+  canvas.beginClip(box);
+  const Stroke outline{QColor(0x33, 0x33, 0x33, 170), 1.5};
+  for (const auto& polygon : map.outlines) {
+    std::vector<QPointF> pixels;
+    for (const QPointF& p : polygon) pixels.push_back(frame.to_pixel(p.x(), p.y()));
+    if (!pixels.empty()) pixels.push_back(pixels.front());
+    canvas.polyline(pixels, outline);
+  }
+  canvas.endClip();
   for (const QPointF& p : map.marked) {
     const QPointF c(sx(p.x()), sy(p.y()));
     canvas.strokeRect(QRectF(c.x() - side / 2 - 3, c.y() - side / 2 - 3, side + 6, side + 6), Stroke{Qt::black, 2});
@@ -147,6 +156,8 @@ void draw_heat_map(Canvas& canvas, const QRectF& area, const HeatMap& map) {
     key_row(map.marked_label, [&](QPointF c) { canvas.strokeRect(QRectF(c.x() - 6, c.y() - 6, 12, 12), Stroke{Qt::black, 2}); });
   if (!map.references.empty())
     key_row(map.references_label, cross);
+  if (!map.outlines.empty())
+    key_row(map.outlines_label, [&](QPointF c) { canvas.strokeRect(QRectF(c.x() - 6, c.y() - 6, 12, 12), outline); });
 }
 
 }  // namespace demoplan::plot

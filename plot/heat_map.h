@@ -27,6 +27,8 @@ struct HeatMap {
   std::vector<HeatSample> samples;
   std::vector<QPointF> marked;  // ringed (the best)
   std::vector<QPointF> references;  // crossed (the published poses)
+  std::vector<std::vector<QPointF>> outlines;  // closed polygons (the furniture from above)
+  QString outlines_label;
   QString marked_label, references_label;
 };
 

@@ -34,6 +34,7 @@ struct Search {
   ProblemAtBase problem_at;
   Pose reference = Pose::Identity();
   std::vector<std::pair<int, BasePose>> published;  // the task's own base poses, by id
+  std::vector<Footprint> furniture;
 };
 
 Search benchmark_search(const TaskInputs& in) {
@@ -44,7 +45,7 @@ Search benchmark_search(const TaskInputs& in) {
   auto scene = benchmark_scene_with_handles(task, in.robot, in.pose, in.handles);
   // The demonstration does not depend on where the robot stands: made once.
   auto demo = std::make_shared<const Demonstration>(make_task_instance(task, scene, in.from).demonstration);
-  Search s{problem_at_base(scene, std::move(demo), robot), scene->robot.base, {}};
+  Search s{problem_at_base(scene, std::move(demo), robot), scene->robot.base, {}, furniture_footprints(*scene)};
   for (int id : benchmark_pose_ids(task, in.robot)) {
     const Pose p = benchmark_robot_pose(task, in.robot, id);
     s.published.push_back({id, {p.translation().x(), p.translation().y(), p.translation().z(), std::atan2(p(1, 0), p(0, 0))}});
@@ -58,7 +59,7 @@ Search cell_search(const TaskInputs& in) {
   if (!scene->robot.fixed_base)
     throw InputError(in.cell, "robot.mobile", "the robot is mobile: it drives to each pick, there is no base to place");
   auto demo = std::make_shared<const Demonstration>(cell_task_instance(scene, in.demo).demonstration);
-  return {problem_at_base(scene, std::move(demo), std::nullopt), scene->robot.base, {}};
+  return {problem_at_base(scene, std::move(demo), std::nullopt), scene->robot.base, {}, furniture_footprints(*scene)};
 }
 
 int run_place(PlaceOptions o) {
@@ -87,6 +88,7 @@ int run_place(PlaceOptions o) {
   const std::vector<BasePose> candidates = candidate_base_poses(region, o.samples, z);
   const std::vector<int> indices = shard_indices(o.samples, shard, shards);
   result.candidate_count = o.samples;
+  result.furniture = search.furniture;
   result.shard = shard, result.shards = shards;
   std::cerr << indices.size() << " of " << o.samples << " candidate base poses over " << to_string(region) << ", seeds "
             << o.seeds << ", " << o.jobs << " job(s)\n";

@@ -32,6 +32,11 @@ void write_placement_heat_map(const std::string& file, const PlacementResult& r)
     map.samples.push_back({c.base.x, c.base.y, c.usable() ? *c.cycle_time_s() : std::nan(""), c.base.yaw});
   for (const PlacementCandidate& c : r.published) map.references.push_back({c.base.x, c.base.y});
   map.references_label = QStringLiteral("published poses");
+  for (const Footprint& f : r.furniture) {
+    auto& polygon = map.outlines.emplace_back();
+    for (const Eigen::Vector2d& p : f.outline) polygon.emplace_back(p.x(), p.y());
+  }
+  map.outlines_label = QStringLiteral("furniture");
   if (!r.candidates.empty() && r.candidates.front().usable())
     map.marked.push_back({r.candidates.front().base.x, r.candidates.front().base.y});
   const QString error = plot::save_figure(out, QSizeF(720, 560), map.title,

@@ -60,6 +60,16 @@ PlacementCandidate read_candidate(const JsonField& j) {
   return c;
 }
 
+nlohmann::json furniture_json(const std::vector<Footprint>& furniture) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Footprint& f : furniture) {
+    nlohmann::json outline = nlohmann::json::array();
+    for (const Eigen::Vector2d& p : f.outline) outline.push_back({p.x(), p.y()});
+    out.push_back({{"name", f.name}, {"outline", outline}});
+  }
+  return out;
+}
+
 }  // namespace
 
 int PlacementResult::feasible_count() const {
@@ -99,7 +109,8 @@ nlohmann::json placement_result_json(const PlacementResult& r) {
                    {"cancelled", r.cancelled},
                    {"wall_time_s", r.wall_time_s},
                    {"candidates", candidates},
-                   {"published", published}};
+                   {"published", published},
+                   {"furniture", furniture_json(r.furniture)}};
   if (r.complete()) {
     // The candidates with a valid plan, best first: empty when nothing in the region works.
     nlohmann::json ranking = nlohmann::json::array();
@@ -127,6 +138,17 @@ PlacementResult load_placement_result(const std::string& file) {
   if (r.shards < 1 || r.shard < 1 || r.shard > r.shards) root["shard"].fail("index must be within 1..count");
   r.wall_time_s = root["wall_time_s"].number();
   r.cancelled = root["cancelled"].boolean();
+  if (root.has("furniture"))
+    for (size_t i = 0; i < root["furniture"].size(); ++i) {
+      const JsonField f = root["furniture"][i];
+      Footprint fp{f["name"].string(), {}};
+      for (size_t k = 0; k < f["outline"].size(); ++k) {
+        const Eigen::VectorXd p = f["outline"][k].vector();
+        if (p.size() != 2) f["outline"][k].fail("must be [x, y]");
+        fp.outline.emplace_back(p.x(), p.y());
+      }
+      r.furniture.push_back(std::move(fp));
+    }
   if (root.has("published"))
     for (size_t i = 0; i < root["published"].size(); ++i) r.published.push_back(read_candidate(root["published"][i]));
   const JsonField candidates = root["candidates"];
@@ -148,6 +170,7 @@ PlacementResult merge_placement_results(const std::vector<std::string>& files) {
     for (const auto& c : part.candidates) join.claim(file, c.index, "candidates");
     out.wall_time_s = std::max(out.wall_time_s, part.wall_time_s);
     if (!part.published.empty()) out.published = std::move(part.published);
+    if (out.furniture.empty()) out.furniture = std::move(part.furniture);
     std::move(part.candidates.begin(), part.candidates.end(), std::back_inserter(out.candidates));
   }
   join.finish("candidates");

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/placement/base_placement.h"
+#include "core/placement/furniture_footprints.h"
 
 namespace demoplan {
 
@@ -22,6 +23,7 @@ struct PlacementResult {
   // The task's published base poses judged alike, for comparison (index: the pose id); only the
   // first shard evaluates them.
   std::vector<PlacementCandidate> published;
+  std::vector<Footprint> furniture;  // what stands in the region, for the heat map
   double wall_time_s = 0;  // the run's; a merged result: the longest shard's
   bool cancelled = false;
 

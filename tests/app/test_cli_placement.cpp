@@ -52,6 +52,7 @@ TEST_F(CliPlacement, ShardsMergeIntoTheRankingOfOneRun) {
     EXPECT_EQ(c["feasible"].get<bool>(), c["reason"].get<std::string>().empty());
   }
   ASSERT_FALSE(j["ranking"].empty()) << one.err;
+  EXPECT_EQ(j["furniture"].size(), 2u);  // shelf_1's table and shelf, outlined for the heat map
   const Json& best = j["candidates"][0];
   EXPECT_EQ(j["ranking"][0], best["index"]);
   EXPECT_GT(best["success_rate"].get<double>(), 0.0);
@@ -77,6 +78,7 @@ TEST_F(CliPlacement, ShardsMergeIntoTheRankingOfOneRun) {
   ASSERT_EQ(m.code, 0) << m.err;
   EXPECT_EQ(ranking(read(merged)), ranking(read(single)));
   EXPECT_EQ(read(merged)["ranking"], read(single)["ranking"]);
+  EXPECT_EQ(read(merged)["furniture"], read(single)["furniture"]);
 
   // A shard of another search, or one given twice, is refused naming the file.
   const fs::path other = dir_ / "other-2.json";

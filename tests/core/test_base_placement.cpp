@@ -15,6 +15,8 @@
 #include "core/io/json_file.h"
 #include "core/io/shards.h"
 #include "core/placement/base_clearance.h"
+#include "core/geometry/polygon_2d.h"
+#include "core/placement/furniture_footprints.h"
 #include "core/placement/placement_result.h"
 #include "core/placement/placement_search.h"
 #include "core/project/benchmark_instance.h"
@@ -265,4 +267,24 @@ TEST(BasePlacement, ACellsRobotTakesItsPedestalAlongAndNeverFloats) {
   EXPECT_NE(base_clearance(floating).find("stands on nothing"), std::string::npos) << base_clearance(floating);
   const PlanningProblem into = problem_at_base(scene, demo, std::nullopt)(BasePose{0.55, 0.0, 0.75, 0.0}.pose());
   EXPECT_NE(base_clearance(*into.scene).find("inside workbench"), std::string::npos) << base_clearance(*into.scene);
+}
+
+TEST(BasePlacement, TheFurnitureIsOutlinedFromAboveWithoutThePedestal) {
+  const BenchmarkTask task = load_benchmark_task(kData, "shelf_1");
+  const std::vector<Footprint> shelf = furniture_footprints(build_benchmark_scene(task, "panda", 0));
+  ASSERT_EQ(shelf.size(), 2u);  // the table and the shelf; the support box moves with the robot
+  for (const Footprint& f : shelf) {
+    ASSERT_GE(f.outline.size(), 4u) << f.name;
+    double area = 0;  // counter-clockwise: positive
+    for (size_t i = 0; i < f.outline.size(); ++i)
+      area += cross2(f.outline[i], f.outline[(i + 1) % f.outline.size()]) / 2;
+    EXPECT_GT(area, 0.1) << f.name;  // m^2: a table and a shelf, not a sliver
+  }
+  const Cell cell = load_cell(kData + "/../cells/ur5_workbench.json");
+  const std::vector<Footprint> bench = furniture_footprints(build_cell_scene(cell, {.data_dir = kData}));
+  ASSERT_EQ(bench.size(), 2u);  // the workbench and the fixture, not the pedestal
+  EXPECT_EQ(bench[0].name, "workbench");
+  double x_max = -1;
+  for (const auto& p : bench[0].outline) x_max = std::max(x_max, p.x());
+  EXPECT_NEAR(x_max, 1.05, 1e-9);  // 0.8 m wide at x 0.65
 }

@@ -102,6 +102,24 @@ private slots:
     QVERIFY(doc.planning()->resultStale());  // planned for the other base
   }
 
+  void aCellsRobotIsStoodElsewhereWithItsPedestal() {
+    Document doc(test::dataDir().toStdString());
+    doc.newFromCell(test::dataDir().toStdString() + "/../cells/ur5_workbench.json");
+    QTemporaryDir dir;
+    const std::string mine = dir.filePath(QStringLiteral("workbench.json")).toStdString();
+    doc.saveCellAs(QString::fromStdString(mine));  // a bundled cell is not edited in place
+    const Pose pedestal = doc.cell()->furniture[0].pose, robot = doc.cell()->robot.base;
+    doc.setRobotBase({-0.1, 0.2, 0.75, 0.7});
+    QVERIFY((doc.cell()->robot.base.translation() - Eigen::Vector3d(-0.1, 0.2, 0.75)).norm() < 1e-12);
+    QVERIFY((doc.cell()->furniture[0].pose.translation() - Eigen::Vector3d(-0.1, 0.2, 0.375)).norm() < 1e-12);
+    QVERIFY(doc.cell()->furniture[1].pose.isApprox(load_cell(test::dataDir().toStdString() + "/../cells/ur5_workbench.json").furniture[1].pose));
+    const Cell written = load_cell(mine);  // written to the cell file at once
+    QVERIFY((written.furniture[0].pose.translation() - Eigen::Vector3d(-0.1, 0.2, 0.375)).norm() < 1e-9);
+    doc.undoStack()->undo();
+    QVERIFY(doc.cell()->furniture[0].pose.isApprox(pedestal));
+    QVERIFY(doc.cell()->robot.base.isApprox(robot));
+  }
+
   void cancelAnswersAtOnceAndAnInvertedRegionIsRefused() {
     Document doc(test::dataDir().toStdString());
     doc.open(test::sampleProject());

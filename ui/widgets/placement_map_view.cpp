@@ -6,6 +6,7 @@
 #include <QToolTip>
 #include <cmath>
 
+#include "core/placement/furniture_footprints.h"
 #include "plot/painter_canvas.h"
 
 namespace demoplan::ui {
@@ -19,7 +20,19 @@ PlacementMapView::PlacementMapView(Document* doc, QWidget* parent) : QWidget(par
     chosen_ = -1;
     update();
   });
-  connect(doc, &Document::sceneChanged, this, qOverload<>(&QWidget::update));
+  connect(doc, &Document::sceneChanged, this, &PlacementMapView::refreshOutlines);
+  connect(doc, &Document::projectLoaded, this, &PlacementMapView::refreshOutlines);
+  refreshOutlines();
+}
+
+void PlacementMapView::refreshOutlines() {
+  outlines_.clear();
+  if (doc_->hasProject())
+    for (const Footprint& f : furniture_footprints(doc_->scene())) {
+      auto& polygon = outlines_.emplace_back();
+      for (const Eigen::Vector2d& p : f.outline) polygon.emplace_back(p.x(), p.y());
+    }
+  update();
 }
 
 plot::HeatMap PlacementMapView::map() const {
@@ -31,6 +44,8 @@ plot::HeatMap PlacementMapView::map() const {
   m.grey_label = tr("no valid plan");
   m.marked_label = tr("chosen");
   m.references_label = tr("robot now");
+  m.outlines = outlines_;
+  m.outlines_label = tr("furniture");
   m.x0 = s.region.x.low, m.x1 = s.region.x.high, m.y0 = s.region.y.low, m.y1 = s.region.y.high;
   const int n = std::max(doc_->placement()->total(), 1);
   m.cell = 0.9 * std::sqrt((m.x1 - m.x0) * (m.y1 - m.y0) / n);

@@ -38,8 +38,11 @@ private:
   plot::HeatMap map() const;
   QRectF area() const { return QRectF(rect()).adjusted(6, 6, -6, -6); }
 
+  void refreshOutlines();
+
   Document* doc_;
   int chosen_ = -1;
+  std::vector<std::vector<QPointF>> outlines_;  // the furniture from above, for the map
 };
 
 }  // namespace demoplan::ui
