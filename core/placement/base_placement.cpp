@@ -45,10 +45,16 @@ PlacementRun plan_once(const PlanningProblem& problem, const PlacementSettings& 
     return run;
   }
   // The cycle: the trajectory the exported program would run (rests added where a blend touches).
-  const JointLimitSet limits = trajectory_limits(problem.scene->robot.model);
-  const ClearTrajectory timed = time_parameterize_clear(*problem.scene, *problem.checker, report.path, limits, {});
+  // A path the timing refuses (a robot without velocity limits) is no program: said, not thrown
+  // out of a worker thread.
+  try {
+    const JointLimitSet limits = trajectory_limits(problem.scene->robot.model);
+    run.cycle_time_s = time_parameterize_clear(*problem.scene, *problem.checker, report.path, limits, {}).trajectory.duration;
+  } catch (const std::exception& e) {
+    run.message = std::string("cannot be timed: ") + e.what();
+    return run;
+  }
   run.valid = true;
-  run.cycle_time_s = timed.trajectory.duration;
   run.path_length = report.validation.length.robot;
   run.grasps = report.validation.grasps;
   return run;
@@ -83,10 +89,10 @@ std::optional<double> PlacementCandidate::path_length() const {
 
 std::string screen_candidate(const PlanningProblem& problem, int samples) {
   const Scene& scene = *problem.scene;
+  if (std::string base = base_clearance(scene); !base.empty()) return base;
   const ConstraintGraph& graph = *problem.graph;
   const StateValidity validity(scene, graph, *problem.checker);
   CollisionData data = problem.checker->make_data();
-  if (std::string base = base_clearance(scene); !base.empty()) return base;
   CollisionPair hit;
   if (!validity.configuration_free(graph.start_state, graph.q_start, data, &hit))
     return "the start configuration collides: " + hit.first + " / " + hit.second;
@@ -112,6 +118,8 @@ PlacementCandidate evaluate_candidate(const ProblemAtBase& problem_at, int index
     c.reason = screen_candidate(problem, settings.screen_samples);
   } catch (const InputError& e) {
     c.reason = e.reason();
+  } catch (const std::exception& e) {  // never out of a worker thread
+    c.reason = e.what();
   }
   c.screened = true;
   c.feasible = c.reason.empty();
