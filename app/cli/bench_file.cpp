@@ -18,6 +18,7 @@ namespace demoplan::cli {
 namespace {
 
 constexpr int kBenchVersion = 1;
+constexpr const char* kCountKey = "run_count";
 
 nlohmann::json run_json(const BenchRun& r) {
   nlohmann::json j{{"index", r.index},
@@ -48,10 +49,7 @@ nlohmann::json run_json(const BenchRun& r) {
 // What the table needs of a run, and what merge writes back.
 BenchRun read_run(const JsonField& j, size_t run_count) {
   BenchRun r;
-  const int index = j["index"].integer();
-  if (index < 0 || static_cast<size_t>(index) >= run_count)
-    j["index"].fail("must be within 0.." + std::to_string(static_cast<long>(run_count) - 1));
-  r.index = static_cast<size_t>(index);
+  r.index = static_cast<size_t>(item_index(j["index"], static_cast<int>(run_count)));
   r.planner = j["planner"].string(), r.task = j["task"].string(), r.robot = j["robot"].string();
   r.pose = j["pose"].integer(), r.seed = j["seed"].integer();
   r.time_limit = j["time_limit_s"].number();
@@ -80,15 +78,12 @@ BenchFile load_bench_file(const std::string& file) {
   if (!root.has("arguments"))
     throw InputError(file, "arguments", "missing: written by a bench from before --shard, it cannot be merged");
   BenchFile b;
-  b.arguments = root["arguments"].value();
+  const ShardHeader header = read_shard_header(root, kCountKey);
+  b.arguments = header.arguments;
   const JsonField planners = root["arguments"]["planners"];
   for (size_t i = 0; i < planners.size(); ++i) planners[i].string();  // read by BenchFile::planners()
-  const int run_count = root["run_count"].integer();
-  if (run_count < 0) root["run_count"].fail("must not be negative");
-  b.run_count = static_cast<size_t>(run_count);
-  b.shard = root["shard"]["index"].integer();
-  b.shards = root["shard"]["count"].integer();
-  if (b.shards < 1 || b.shard < 1 || b.shard > b.shards) root["shard"].fail("index must be within 1..count");
+  b.run_count = static_cast<size_t>(header.items);
+  b.shard = header.shard, b.shards = header.shards;
   const JsonField runs = root["runs"];
   for (size_t i = 0; i < runs.size(); ++i) b.runs.push_back(read_run(runs[i], b.run_count));
   return b;
@@ -185,12 +180,10 @@ void save_bench_file(const std::string& file, const BenchFile& bench, const Benc
   for (const BenchRun& r : bench.runs) runs.push_back(run_json(r));
   nlohmann::json j{{"format", kBenchFormat},
                    {"version", kBenchVersion},
-                   {"arguments", bench.arguments},
-                   {"run_count", bench.run_count},
-                   {"shard", {{"index", bench.shard}, {"count", bench.shards}}},
                    {"rows", table.rows},
                    {"comparisons", table.comparisons},
                    {"runs", runs}};
+  write_shard_header(j, {bench.arguments, static_cast<int>(bench.run_count), bench.shard, bench.shards}, kCountKey);
   // As before "arguments": how the tasks were made (figure reads "from").
   for (const char* key : {"from", "handles", "cell", "demos"})
     if (bench.arguments.contains(key)) j[key] = bench.arguments[key];

@@ -59,14 +59,9 @@ int merge_bench(const MergeOptions& o) {
 }
 
 int run_merge(const MergeOptions& o) {
-  std::string format;
-  for (const std::string& file : o.files) {
-    const std::string kind = format_of(file);
-    if (format.empty()) format = kind;
-    else if (kind != format)
-      throw InputError(file, "format", "'" + kind + "' cannot be merged with " + o.files.front() + " ('" + format + "')");
-  }
-  return format == kBenchFormat ? merge_bench(o) : merge_placement(o);
+  // The first file says what is merged; the loader of that kind refuses, naming the file, any
+  // other of another format as it reads it (each file is read once).
+  return format_of(o.files.front()) == kBenchFormat ? merge_bench(o) : merge_placement(o);
 }
 
 }  // namespace

@@ -13,6 +13,29 @@ std::vector<int> shard_indices(int count, int shard, int shards) {
   return out;
 }
 
+ShardHeader read_shard_header(const JsonField& root, const std::string& count_key) {
+  ShardHeader h;
+  h.arguments = root["arguments"].value();
+  h.items = root[count_key].integer();
+  if (h.items < 0) root[count_key].fail("must not be negative");
+  h.shard = root["shard"]["index"].integer();
+  h.shards = root["shard"]["count"].integer();
+  if (h.shards < 1 || h.shard < 1 || h.shard > h.shards) root["shard"].fail("index must be within 1..count");
+  return h;
+}
+
+void write_shard_header(nlohmann::json& file, const ShardHeader& h, const std::string& count_key) {
+  file["arguments"] = h.arguments;
+  file[count_key] = h.items;
+  file["shard"] = {{"index", h.shard}, {"count", h.shards}};
+}
+
+int item_index(const JsonField& index, int items) {
+  const int i = index.integer();
+  if (i < 0 || i >= items) index.fail("must be within 0.." + std::to_string(items - 1));
+  return i;
+}
+
 void ShardJoin::add(const std::string& file, const ShardHeader& h) {
   if (files_.empty()) {
     first_ = h;

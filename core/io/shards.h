@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/io/json_file.h"
+
 namespace demoplan {
 
 // The indices of 0..count-1 that shard `shard` of `shards` (1-based) does: every shards-th, so
@@ -20,6 +22,13 @@ struct ShardHeader {
   int items = 0;             // in the whole job
   int shard = 1, shards = 1;
 };
+
+// The header every partial result file carries: "arguments", `count_key` (the job's item count)
+// and "shard": {"index", "count"}. Read with its ranges checked (InputError naming the field).
+ShardHeader read_shard_header(const JsonField& root, const std::string& count_key);
+void write_shard_header(nlohmann::json& file, const ShardHeader& header, const std::string& count_key);
+// An item's index in the whole job, as a partial file gives it: within 0..items-1.
+int item_index(const JsonField& index, int items);
 
 // Collects the partial files of one job: every shard exactly once, the same arguments, item
 // count and shard count, no item twice. Each check throws InputError naming the file at fault.

@@ -60,13 +60,17 @@ int furniture_under_base(const Scene& scene, double tolerance) {
   return -1;
 }
 
-int robot_pedestal(const Scene& scene) {
-  const int under = furniture_under_base(scene);
+namespace {
+// The furniture `under` the base (furniture_under_base) when it is a pedestal, else -1.
+int pedestal_of(const Scene& scene, int under) {
   if (under < 0) return -1;
   for (const ContactSurface& c : scene.furniture[static_cast<size_t>(under)].srdf.contacts)
     if (!c.polygons.empty()) return -1;  // parts may rest on it: it stays
   return under;
 }
+}  // namespace
+
+int robot_pedestal(const Scene& scene) { return pedestal_of(scene, furniture_under_base(scene)); }
 
 std::string base_clearance(const Scene& scene, double lift) {
   if (!scene.robot.fixed_base) return "";
@@ -75,7 +79,8 @@ std::string base_clearance(const Scene& scene, double lift) {
   bool support_box = false;
   for (const SceneFurniture& f : scene.furniture) support_box |= f.kind == kSupportBoxKind;
   const double z = scene.robot.base.translation().z();
-  if (!support_box && z > lift && furniture_under_base(scene, lift) < 0)
+  const int under = furniture_under_base(scene, lift);
+  if (!support_box && z > lift && under < 0)
     return "the robot's base stands on nothing: " + std::to_string(static_cast<int>(std::lround(z * 1000))) +
            " mm above the floor with no furniture top under it";
   const RobotModel& model = scene.robot.model;
@@ -86,7 +91,7 @@ std::string base_clearance(const Scene& scene, double lift) {
     if (body[l] == 0)
       for (const Geometry& g : model.links[l].collisions)
         base.push_back({fcl_object(g), up * links[l] * g.origin, "the robot's " + model.links[l].name});
-  const int pedestal = robot_pedestal(scene);
+  const int pedestal = pedestal_of(scene, under);
   for (size_t i = 0; i < scene.furniture.size(); ++i) {
     const SceneFurniture& f = scene.furniture[i];
     for (size_t l = 0; l < f.model.links.size(); ++l)

@@ -132,18 +132,20 @@ PlacementCandidate evaluate_candidate(const ProblemAtBase& problem_at, int index
   return c;
 }
 
-void rank_candidates(std::vector<PlacementCandidate>& candidates) {
+bool ranks_before(const PlacementCandidate& a, const PlacementCandidate& b) {
   constexpr double kNone = 1e300;
-  std::sort(candidates.begin(), candidates.end(), [&](const PlacementCandidate& a, const PlacementCandidate& b) {
-    // A base that does not fit is never better, whatever the planner (which does not check the
-    // base against the furniture, as the benchmark does not) made of it with --plan-rejected.
-    if (a.feasible != b.feasible) return a.feasible;
-    const double sa = a.success_rate(), sb = b.success_rate();
-    if (sa != sb) return sa > sb;
-    const double ca = a.cycle_time_s().value_or(kNone), cb = b.cycle_time_s().value_or(kNone);
-    if (ca != cb) return ca < cb;
-    return a.index < b.index;
-  });
+  // A base that does not fit is never better, whatever the planner (which does not check the
+  // base against the furniture, as the benchmark does not) made of it with --plan-rejected.
+  if (a.feasible != b.feasible) return a.feasible;
+  const double sa = a.success_rate(), sb = b.success_rate();
+  if (sa != sb) return sa > sb;
+  const double ca = a.cycle_time_s().value_or(kNone), cb = b.cycle_time_s().value_or(kNone);
+  if (ca != cb) return ca < cb;
+  return a.index < b.index;
+}
+
+void rank_candidates(std::vector<PlacementCandidate>& candidates) {
+  std::sort(candidates.begin(), candidates.end(), ranks_before);
 }
 
 }  // namespace demoplan

@@ -67,5 +67,7 @@ std::string screen_candidate(const PlanningProblem& problem, int samples);
 // time, then the index (so equal candidates keep one order whichever machine or shard evaluated
 // them).
 void rank_candidates(std::vector<PlacementCandidate>& candidates);
+// The order rank_candidates sorts by: true when `a` goes before `b`.
+bool ranks_before(const PlacementCandidate& a, const PlacementCandidate& b);
 
 }  // namespace demoplan

@@ -13,6 +13,7 @@ namespace {
 
 constexpr const char* kFormat = "demoplan-placement";
 constexpr int kVersion = 1;
+constexpr const char* kCountKey = "candidate_count";
 
 nlohmann::json optional_number(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
 
@@ -101,9 +102,6 @@ nlohmann::json placement_result_json(const PlacementResult& r) {
   for (const auto& c : r.published) published.push_back(candidate_json(c));
   nlohmann::json j{{"format", kFormat},
                    {"version", kVersion},
-                   {"arguments", r.arguments},
-                   {"candidate_count", r.candidate_count},
-                   {"shard", {{"index", r.shard}, {"count", r.shards}}},
                    {"evaluated", r.candidates.size()},
                    {"feasible", r.feasible_count()},
                    {"cancelled", r.cancelled},
@@ -111,6 +109,7 @@ nlohmann::json placement_result_json(const PlacementResult& r) {
                    {"candidates", candidates},
                    {"published", published},
                    {"furniture", furniture_json(r.furniture)}};
+  write_shard_header(j, {r.arguments, r.candidate_count, r.shard, r.shards}, kCountKey);
   if (r.complete()) {
     // The candidates with a valid plan, best first: empty when nothing in the region works.
     nlohmann::json ranking = nlohmann::json::array();
@@ -131,11 +130,10 @@ PlacementResult load_placement_result(const std::string& file) {
   const JsonField root(json, file);
   check_format(root, kFormat, kVersion, "placement result");
   PlacementResult r;
-  r.arguments = root["arguments"].value();
-  r.candidate_count = root["candidate_count"].integer();
-  r.shard = root["shard"]["index"].integer();
-  r.shards = root["shard"]["count"].integer();
-  if (r.shards < 1 || r.shard < 1 || r.shard > r.shards) root["shard"].fail("index must be within 1..count");
+  const ShardHeader header = read_shard_header(root, kCountKey);
+  r.arguments = header.arguments;
+  r.candidate_count = header.items;
+  r.shard = header.shard, r.shards = header.shards;
   r.wall_time_s = root["wall_time_s"].number();
   r.cancelled = root["cancelled"].boolean();
   if (root.has("furniture"))
@@ -153,9 +151,8 @@ PlacementResult load_placement_result(const std::string& file) {
     for (size_t i = 0; i < root["published"].size(); ++i) r.published.push_back(read_candidate(root["published"][i]));
   const JsonField candidates = root["candidates"];
   for (size_t i = 0; i < candidates.size(); ++i) {
+    item_index(candidates[i]["index"], r.candidate_count);
     r.candidates.push_back(read_candidate(candidates[i]));
-    if (r.candidates.back().index < 0 || r.candidates.back().index >= r.candidate_count)
-      candidates[i]["index"].fail("must be within 0.." + std::to_string(r.candidate_count - 1));
   }
   return r;
 }

@@ -28,13 +28,8 @@ void PlacementSearchJob::setSettings(const PlacementSearchSettings& settings) { 
 
 const PlacementCandidate* PlacementSearchJob::best() const {
   const PlacementCandidate* best = nullptr;
-  for (const auto& c : candidates_) {
-    if (!c.usable()) continue;
-    std::vector<PlacementCandidate> two{c};
-    if (best) two.push_back(*best);
-    rank_candidates(two);
-    if (two.front().index == c.index) best = &c;
-  }
+  for (const auto& c : candidates_)
+    if (c.usable() && (!best || ranks_before(c, *best))) best = &c;
   return best;
 }
 
