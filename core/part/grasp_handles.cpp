@@ -2,6 +2,8 @@
 
 #include <fcl/fcl.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <chrono>
 #include <optional>
@@ -65,6 +67,7 @@ public:
     for (const auto& v : mesh.vertices) vertices_.push_back(v.cast<double>() * scale);
     triangles_ = &mesh.triangles;
     part_.emplace(*shared_mesh_bvh(mesh, Eigen::Vector3d::Constant(scale)));
+    flat_faces_ = flat_faces();
     for (const Geometry& g : gripper.hand) {
       hand_.push_back(*fcl_object(g));
       hand_origin_.push_back(g.origin);
@@ -76,11 +79,12 @@ public:
     std::vector<GeneratedHandle> found;
     for (const Eigen::Vector3d& z : closing_directions()) {
       const MeshLines lines(vertices_, *triangles_, z);
-      // Approach directions about z, the first along the part axis farthest from z.
+      // Approach directions about z, the first along the part axis farthest from z, or along
+      // the part's own long side across z where the mesh frame is turned off it.
       Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
       for (int i = 1; i < 3; ++i)
         if (std::abs(Eigen::Vector3d::Unit(i).dot(z)) < std::abs(axis.dot(z))) axis = Eigen::Vector3d::Unit(i);
-      const Eigen::Vector3d u = (axis - axis.dot(z) * z).normalized(), v = z.cross(u);
+      const Eigen::Vector3d u = first_approach((axis - axis.dot(z) * z).normalized(), z), v = z.cross(u);
       const int approaches = std::max(1, static_cast<int>(std::lround(2 * M_PI / o_.approach_step)));
       // Along the part's axes first, then between them: equal grasps keep this order.
       for (int i = 0; i < approaches; ++i) {
@@ -99,6 +103,42 @@ public:
   }
 
 private:
+  // The first approach about z: `axis` (across z), unless the part seen along z has a clear
+  // long direction off the approaches from it and no flat face on them: a scanned bottle drawn
+  // turned in its mesh frame (YCB-V's mustard, 27 degrees) is grasped across its own sides.
+  Eigen::Vector3d first_approach(const Eigen::Vector3d& axis, const Eigen::Vector3d& z) const {
+    const Eigen::Vector3d w = z.cross(axis);
+    // The surface's second moments in the (axis, w) plane, each triangle integrated exactly
+    // (E[p p^T] over a triangle = (a a^T + b b^T + c c^T + s s^T) / 12, s = a + b + c).
+    Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    double total = 0.0;
+    for (const auto& t : *triangles_) {
+      const Eigen::Vector3d a = vertices_[t[0]], b = vertices_[t[1]], c = vertices_[t[2]];
+      const double area = 0.5 * (b - a).cross(c - a).norm();
+      auto in_plane = [&](const Eigen::Vector3d& p) { return Eigen::Vector2d(p.dot(axis), p.dot(w)); };
+      const Eigen::Vector2d pa = in_plane(a), pb = in_plane(b), pc = in_plane(c), ps = pa + pb + pc;
+      m += area / 12.0 * (pa * pa.transpose() + pb * pb.transpose() + pc * pc.transpose() + ps * ps.transpose());
+      mean += area / 3.0 * ps;
+      total += area;
+    }
+    if (!(total > 0)) return axis;
+    mean /= total;
+    m = m / total - mean * mean.transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(m);
+    const double minor = eig.eigenvalues()[0], major = eig.eigenvalues()[1];
+    if (!(major > 1.2 * minor)) return axis;  // round or square across z: no long side
+    auto on_grid = [&](const Eigen::Vector3d& d) {  // within 10 degrees of an approach from axis
+      return std::abs(std::remainder(std::atan2(d.dot(w), d.dot(axis)), o_.approach_step)) < 0.17;
+    };
+    // A flat face across z on the grid says the mesh frame is the part's own (a CAD part):
+    // keep it, as a person grasps an L-bracket along its legs, not along its inertia axes.
+    for (const Eigen::Vector3d& n : flat_faces_)
+      if (std::abs(n.dot(z)) < 0.17 && on_grid(n)) return axis;
+    const Eigen::Vector3d d = eig.eigenvectors()(0, 1) * axis + eig.eigenvectors()(1, 1) * w;
+    return on_grid(d) ? axis : d.normalized();
+  }
+
   // The part's axes, their diagonals, and the normals of its largest flat faces (one sign each).
   std::vector<Eigen::Vector3d> closing_directions() const {
     std::vector<Eigen::Vector3d> dirs;
@@ -112,7 +152,13 @@ private:
     for (const auto& d : {X, Y, Z, Eigen::Vector3d(X + Y), Eigen::Vector3d(X - Y), Eigen::Vector3d(X + Z),
                           Eigen::Vector3d(X - Z), Eigen::Vector3d(Y + Z), Eigen::Vector3d(Y - Z)})
       add(d);
-    // Flat faces: area-weighted normals grouped within 10 degrees (either sign).
+    for (size_t i = 0; i < flat_faces_.size() && i < 6; ++i) add(flat_faces_[i]);
+    return dirs;
+  }
+
+  // Normals of the part's flat faces, largest first: area-weighted normals grouped within 10
+  // degrees (either sign), those holding at least 5 % of the surface.
+  std::vector<Eigen::Vector3d> flat_faces() const {
     struct Face {
       Eigen::Vector3d normal;
       double area;
@@ -130,9 +176,10 @@ private:
       else it->area += area;
     }
     std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.area > b.area; });
-    for (size_t i = 0; i < faces.size() && i < 6; ++i)
-      if (faces[i].area >= 0.05 * total) add(faces[i].normal);
-    return dirs;
+    std::vector<Eigen::Vector3d> out;
+    for (const Face& f : faces)
+      if (f.area >= 0.05 * total) out.push_back(f.normal);
+    return out;
   }
 
   Line line_through(const MeshLines& lines, const Eigen::Vector3d& point) {
@@ -287,6 +334,7 @@ private:
   }
 
   Eigen::Vector3d com_;
+  std::vector<Eigen::Vector3d> flat_faces_;  // flat_faces(), computed once
   const ParallelGripper& gripper_;
   GraspOptions o_;
   double cos_friction_;

@@ -67,6 +67,28 @@ TEST(GraspHandles, ABoxIsGraspedAcrossItsNarrowSidesWithTheHandOutside) {
   EXPECT_LT(r.handles[0].frame.pose.translation().head<2>().norm(), 1e-6);
 }
 
+// A part drawn turned in its mesh frame (YCB-V's mustard bottle is, by 27 degrees) is approached
+// along its own sides, not along the frame's axes, when it is closed across its height.
+TEST(GraspHandles, APartTurnedInItsMeshFrameIsApproachedAlongItsOwnSides) {
+  TriangleMesh box = box_mesh({0.12, 0.03, 0.05});
+  const Eigen::Matrix3f turn = Eigen::AngleAxisf(27.0f * static_cast<float>(M_PI) / 180, Eigen::Vector3f::UnitZ()).toRotationMatrix();
+  for (auto& v : box.vertices) v = turn * v;
+  const Eigen::Vector3d side = turn.col(0).cast<double>();  // the box's long side
+  const GraspReport r = generate_handles(box, 1.0, Eigen::Vector3d::Zero(), panda_gripper());
+  int across_height = 0;
+  for (const auto& h : r.handles) {
+    if (std::abs(h.frame.pose.linear().col(2).z()) < 0.99) continue;  // closing across the 5 cm height only
+    ++across_height;
+    const Eigen::Vector3d approach = h.frame.pose.linear().col(0);
+    const double along_side = std::abs(approach.dot(side)), across_side = std::abs(approach.dot(Eigen::Vector3d::UnitZ().cross(side)));
+    // Every 45 degrees from the long side: along it, across it or on a diagonal, never 18 degrees off.
+    const double off = std::min({std::acos(std::min(1.0, along_side)), std::acos(std::min(1.0, across_side)),
+                                 std::abs(std::acos(std::min(1.0, along_side)) - M_PI / 4)});
+    EXPECT_LT(off, 2 * M_PI / 180) << h.frame.name << " approach " << approach.transpose();
+  }
+  EXPECT_GE(across_height, 2);
+}
+
 TEST(GraspHandles, APartWiderThanTheOpeningHasNoneAndSaysWhy) {
   const GraspReport r = generate_handles(box_mesh({0.15, 0.12, 0.1}), 1.0, Eigen::Vector3d::Zero(), panda_gripper());
   EXPECT_TRUE(r.handles.empty());
@@ -100,10 +122,11 @@ TEST(GraspHandles, YcbvPartsGetHandlesCloseToTheHandMadeOnes) {
     total += static_cast<int>(srdf.handles.size());
   }
   std::printf("all parts: %d of %d\n", matched, total);
-  // Measured 36 of 76 (2026-12-02). The misses are hand-made choices no rule of ours makes:
-  // obj_000007's handles turned 27 degrees off its axes, grasps 3 to 5 cm deep where ours go as
-  // deep as the palm allows (capped at the centre of mass), corner grasps at 45 degrees.
-  EXPECT_GE(matched, 34);
+  // Measured 41 of 76 (2026-12-03; 36 before the approaches followed a part's own long side:
+  // obj_000007 0 -> 5 of 8). The misses are hand-made choices no rule of ours makes: grasps 1 to
+  // 3 cm shallower than ours, which go as deep as the palm allows (capped at the centre of mass),
+  // corner grasps at 45 degrees, and more distinct grasps than the 24 we keep (obj_000021).
+  EXPECT_GE(matched, 40);
 }
 
 }  // namespace
