@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "core/cell/cell_scene.h"
-#include "core/demo/settle_demonstration.h"
+#include "core/demo/supported_rests.h"
 #include "core/demo/benchmark_demonstration.h"
 #include "core/error.h"
 #include "core/part/grasp_handles.h"
@@ -83,7 +83,7 @@ std::shared_ptr<const Scene> load_cell_scene(const std::string& file, const std:
 }
 
 BenchmarkInstance cell_task_instance(std::shared_ptr<const Scene> scene, const std::string& demo_file) {
-  Demonstration demo = settle_on_supports(*scene, load_demonstration(demo_file));
+  Demonstration demo = settle_for_planning(*scene, load_demonstration(demo_file), demo_file);
   return make_benchmark_instance(std::move(scene), std::move(demo));
 }
 
@@ -105,7 +105,7 @@ LoadedTask load_task_inputs(const TaskInputs& in) {
   t.task = load_benchmark_task(in.data_dir, in.task);
   auto scene = benchmark_scene_with_handles(t.task, in.robot, in.pose, in.handles);
   t.instance = in.demo.empty() ? make_task_instance(t.task, std::move(scene), in.from)
-                               : make_benchmark_instance(std::move(scene), settle_on_supports(*scene, load_demonstration(in.demo)));
+                               : make_benchmark_instance(std::move(scene), settle_for_planning(*scene, load_demonstration(in.demo), in.demo));
   // Objects riding on the robot: say where they were put when it is not where the demonstrator
   // put them.
   const DeckPlacementReport& deck = t.instance.deck;

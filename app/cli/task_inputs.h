@@ -47,7 +47,8 @@ std::shared_ptr<const Scene> benchmark_scene_with_handles(const BenchmarkTask& t
 // The scene of a cell file, its generated handles and placements summed up on stderr.
 std::shared_ptr<const Scene> load_cell_scene(const std::string& file, const std::string& data_dir);
 // A cell's task instance: the demonstration file's parts settled onto the cell's supports (a
-// demonstration from video rests them a millimetre off).
+// demonstration from video rests them a millimetre off); a part resting on no support is refused
+// naming the event (settle_for_planning).
 BenchmarkInstance cell_task_instance(std::shared_ptr<const Scene> scene, const std::string& demo_file);
 
 }  // namespace demoplan::cli

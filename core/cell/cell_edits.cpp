@@ -6,7 +6,9 @@
 
 #include "core/demo/benchmark_scene.h"
 #include "core/error.h"
+#include "core/placement/base_clearance.h"
 #include "core/model/mesh.h"
+#include "core/model/mobile_base.h"
 #include "core/model/package_paths.h"
 #include "core/scene/collision_checker.h"
 #include "core/scene/resting_pose_sampler.h"
@@ -19,6 +21,19 @@ bool name_taken(const Cell& cell, const std::string& name) {
   for (const auto& f : cell.furniture)
     if (f.name == name) return true;
   return cell.part_index(name) >= 0;
+}
+
+constexpr double kPedestalHeight = 0.75;
+
+// A box of `height` under the robot's base that nothing is put down on, the base on its top.
+CellFurniture pedestal_under(const Cell& cell, const Pose& base, double height) {
+  CellFurniture pedestal;
+  pedestal.name = unique_cell_name(cell, "pedestal");
+  pedestal.box = {0.3, 0.3, height};
+  pedestal.pose.linear() = base.linear();
+  pedestal.pose.translation() = Eigen::Vector3d(base.translation().x(), base.translation().y(), height / 2);
+  pedestal.auto_supports = false;  // nothing is put down on the robot's pedestal
+  return pedestal;
 }
 
 }  // namespace
@@ -36,15 +51,10 @@ Cell starter_cell(const std::string& file, const std::string& robot, const std::
   c.name = std::filesystem::path(file).stem().string();
   c.robot.bundled = robot;
   c.robot.mobile = !r.fixed_base;
-  const double top = 0.75;
+  const double top = kPedestalHeight;
   if (r.fixed_base) {
-    CellFurniture pedestal;
-    pedestal.name = "pedestal";
-    pedestal.box = {0.3, 0.3, top};
-    pedestal.pose.translation() = Eigen::Vector3d(0, 0, top / 2);
-    pedestal.auto_supports = false;  // nothing is put down on the robot's pedestal
-    c.furniture.push_back(pedestal);
     c.robot.base.translation() = Eigen::Vector3d(0, 0, top);
+    c.furniture.push_back(pedestal_under(c, c.robot.base, top));
   }
   CellFurniture table;
   table.name = "table";
@@ -73,6 +83,29 @@ void replace_robot(Cell& cell, const std::string& bundled, const std::string& ur
   }
   if (robot.mobile) robot.base.translation().z() = 0.0;  // a mobile base drives on the floor
   cell.robot = robot;
+}
+
+void set_robot_mobile(Cell& cell, const Scene& scene, bool mobile) {
+  if (!cell.robot.bundled.empty())
+    throw InputError(cell.file, "robot.mobile",
+                     "the bundled " + cell.robot.bundled + " is " + (cell.robot.mobile ? "mobile" : "fixed") +
+                         " as its data says; a robot from URDF and SRDF files can be made mobile");
+  if (mobile == cell.robot.mobile) return;
+  Pose& base = cell.robot.base;
+  const int pedestal = robot_pedestal(scene);  // scene furniture i is the cell's furniture i
+  if (mobile) {
+    if (const std::string problem = mobile_base_problem(scene.robot.model, std::filesystem::path(cell.robot.urdf).filename().string());
+        !problem.empty())
+      throw InputError(cell.file, "robot.mobile", problem);
+    if (pedestal >= 0) cell.furniture.erase(cell.furniture.begin() + pedestal);  // it drives off it
+    base.translation().z() = 0.0;  // a mobile base drives on the floor
+  } else if (pedestal < 0 && furniture_under_base(scene) < 0) {
+    // Standing on the floor: an arm needs something to stand on at a working height.
+    const double height = base.translation().z() > 0.05 ? base.translation().z() : kPedestalHeight;
+    base.translation().z() = height;
+    cell.furniture.push_back(pedestal_under(cell, base, height));
+  }
+  cell.robot.mobile = mobile;
 }
 
 double guess_unit_scale(const std::string& mesh_file) {

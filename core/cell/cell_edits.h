@@ -27,6 +27,14 @@ Cell starter_cell(const std::string& file, const std::string& robot, const std::
 void replace_robot(Cell& cell, const std::string& bundled, const std::string& urdf, const std::string& srdf,
                    const std::string& data_dir);
 
+// Makes the cell's robot from disk mobile (its base moved on the floor through its own x, y, yaw
+// joints) or fixed. `scene` is the cell's scene as it is (its robot model and furniture). Made
+// mobile, the robot goes onto the floor and the pedestal it stood on (robot_pedestal) is taken
+// out; made fixed, a robot standing on nothing gets a 0.75 m pedestal as a new cell's has.
+// Throws InputError for a bundled robot (its data says whether it is mobile) and for a URDF
+// without the planar base joints a mobile base needs (mobile_base_problem).
+void set_robot_mobile(Cell& cell, const Scene& scene, bool mobile);
+
 // Metres per unit of a mesh file, guessed from its size: CAD files of shop-floor parts are in
 // millimetres (an extent above 3 units), scanned ones in metres.
 double guess_unit_scale(const std::string& mesh_file);

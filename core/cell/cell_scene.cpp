@@ -10,6 +10,7 @@
 #include "core/demo/benchmark_scene.h"
 #include "core/error.h"
 #include "core/model/kinematics.h"
+#include "core/model/mobile_base.h"
 #include "core/part/resting_placements.h"
 
 namespace demoplan {
@@ -103,6 +104,10 @@ SceneRobot cell_robot(const Cell& cell, const CellSceneOptions& o, const UrdfOpt
   for (const auto& [path, key] : {std::pair{urdf, "robot.urdf"}, std::pair{srdf, "robot.srdf"}})
     if (!fs::is_regular_file(path)) throw InputError(cell.file, key, "no such file: " + path);
   robot.model = load_urdf(urdf, urdf_options);
+  // A robot from disk said to be mobile must have the planar joints the planner moves it by.
+  if (!robot.fixed_base && cell.robot.bundled.empty())
+    if (const std::string problem = mobile_base_problem(robot.model, fs::path(urdf).filename().string()); !problem.empty())
+      throw InputError(cell.file, "robot.mobile", problem);
   robot.srdf = load_srdf(srdf);
   if (robot.name.empty()) robot.name = robot.model.name;
   robot.base = cell.robot.base;

@@ -46,6 +46,13 @@ std::optional<MobileBase> find_mobile_base(const RobotModel& model) {
   return b;
 }
 
+std::string mobile_base_problem(const RobotModel& model, const std::string& file) {
+  if (find_mobile_base(model)) return "";
+  return file + " has no planar base joints: a mobile base needs its root link followed by two prismatic joints "
+                "along horizontal axes and a revolute joint about the vertical (x, y, yaw), through links without "
+                "collision geometry, then the base body";
+}
+
 Pose MobileBase::body_pose(const RobotModel& model, const Eigen::VectorXd& q, const Pose& root) const {
   return link_pose(model, q, root, body);
 }

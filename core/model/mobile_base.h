@@ -5,6 +5,7 @@
 // collision geometry, the base body. A fixed-base arm has no such chain.
 #include <Eigen/Core>
 #include <optional>
+#include <string>
 
 #include "core/geometry/se3.h"
 #include "core/model/robot_model.h"
@@ -24,5 +25,9 @@ struct MobileBase {
 };
 
 std::optional<MobileBase> find_mobile_base(const RobotModel& model);
+
+// What a mobile base needs, in the user's terms, for `model` (read from `file`): "" when
+// find_mobile_base finds one, else why the robot cannot be moved on the floor.
+std::string mobile_base_problem(const RobotModel& model, const std::string& file);
 
 }  // namespace demoplan

@@ -36,8 +36,10 @@ Json own_cell(const fs::path& dir, float sx, float sy, float sz) {
                       {"pose", pose(0.45, -0.2, 0.75 + sz / 2000.0 + 0.001)}}}}};
 }
 
-// Grasp the part where it rests, put it down 35 cm further and turned a quarter.
-Json one_pick(double z) {
+// Grasp the part where it rests, put it down 35 cm further and turned a quarter (at `release_z`
+// when given: where the demonstrator let go of it).
+Json one_pick(double z, double release_z = -1) {
+  if (release_z < 0) release_z = z;
   auto matrix = [](double x, double y, double z, double yaw) {
     const double c = std::cos(yaw), s = std::sin(yaw);
     return Json{{c, -s, 0, x}, {s, c, 0, y}, {0, 0, 1, z}, {0, 0, 0, 1}};
@@ -50,7 +52,7 @@ Json one_pick(double z) {
           {"events",
            {{{"frame", 20}, {"object", "block"}, {"type", "grasp"}, {"confidence", 1.0}, {"poses", {{"block", matrix(0.45, -0.2, z, 0)}}}},
             {{"frame", 60}, {"object", "block"}, {"type", "release"}, {"confidence", 1.0},
-             {"poses", {{"block", matrix(0.45, 0.15, z, M_PI / 2)}}}}}}};
+             {"poses", {{"block", matrix(0.45, 0.15, release_z, M_PI / 2)}}}}}}};
 }
 
 class CliCell : public CliSuite {
@@ -179,6 +181,16 @@ TEST_F(CliCell, CellMistakesAreRefusedNamingFileAndField) {
   expect_refused(run({"check", "--cell", b.string()}), b.string(), "robot", "starts in collision");
 
   expect_refused(run({"plan", "--cell", m.string()}), m.string(), "", "--demo");
+}
+
+// A part let go of 5 cm above the table (a release the camera did not see land) is refused
+// before planning, naming the demonstration file, the event, its frame and the part.
+TEST_F(CliCell, APartReleasedInTheAirIsRefusedBeforePlanning) {
+  const fs::path cell = write("own.cell.json", own_cell(dir_, 40, 50, 80));
+  const fs::path demo = write("floating.demo.json", one_pick(0.75 + 0.04 + 0.001, 0.75 + 0.04 + 0.05));
+  const CliResult r = run({"plan", "--cell", cell.string(), "--demo", demo.string(), "--seed", "1", "--time-limit", "60"});
+  expect_refused(r, demo.string(), "events[1] (frame 60)", "block rests on no support: 50 mm above the nearest (table/");
+  EXPECT_EQ(r.err.find("guided"), std::string::npos) << r.err;  // refused before the planner ran
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "core/cell/cell_edits.h"
 #include "core/error.h"
 #include "core/model/package_paths.h"
+#include "core/placement/base_clearance.h"
 #include "core/scene/collision_checker.h"
 #include "tests/support/box_stl.h"
 #include "tests/support/temp_folder.h"
@@ -255,6 +256,66 @@ TEST(CellEdits, TheRobotIsReplacedByABundledOneOrOneFromFiles) {
     EXPECT_NE(std::string(e.what()).find("package://my_arm_description/meshes"), std::string::npos) << e.what();
   }
   EXPECT_THROW(replace_robot(cell, "", dir.file("missing.urdf"), srdf, DEMOPLAN_DATA_DIR), InputError);
+}
+
+}  // namespace
+}  // namespace demoplan
+
+namespace demoplan {
+namespace {
+
+// A robot from disk made mobile: refused for an arm without planar base joints (the cell as it
+// was), accepted for the KMR's URDF (off its pedestal, onto the floor), and made fixed again
+// (a pedestal put back under it); a bundled robot's mobility is its data's.
+TEST(CellEdits, ARobotFromDiskIsMadeMobileOnlyWithPlanarBaseJoints) {
+  test::TempFolder dir("demoplan_cell_edits");
+  const CellSceneOptions options{.data_dir = DEMOPLAN_DATA_DIR};
+  Cell cell = starter_cell(dir.file("cell.json"), "ur5", DEMOPLAN_DATA_DIR);
+  EXPECT_THROW(set_robot_mobile(cell, build_cell_scene(cell, options), true), InputError);  // bundled
+
+  const std::string robots = std::string(DEMOPLAN_DATA_DIR) + "/robots/";
+  replace_robot(cell, "", robots + "ur5/ur5.urdf", robots + "ur5/ur5.srdf", DEMOPLAN_DATA_DIR);
+  const Cell arm = cell;
+  try {
+    set_robot_mobile(cell, build_cell_scene(cell, options), true);
+    ADD_FAILURE() << "the UR5 was made mobile";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), cell.file);
+    EXPECT_EQ(e.field(), "robot.mobile");
+    EXPECT_NE(e.reason().find("ur5.urdf has no planar base joints"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(cell.robot.mobile);
+  EXPECT_EQ(cell.furniture.size(), arm.furniture.size());
+  // A cell file that says so by hand is refused the same way when it is loaded.
+  Cell by_hand = cell;
+  by_hand.robot.mobile = true;
+  try {
+    build_cell_scene(by_hand, options);
+    ADD_FAILURE() << "a cell with a mobile UR5 loaded";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "robot.mobile");
+  }
+
+  const std::string kmr = robots + "kuka_kmr_iiwa/kuka_kmr_iiwa";
+  replace_robot(cell, "", kmr + ".urdf", kmr + ".srdf", DEMOPLAN_DATA_DIR);
+  ASSERT_EQ(cell.furniture.size(), 2u);  // the pedestal and the table
+  set_robot_mobile(cell, build_cell_scene(cell, options), true);
+  EXPECT_TRUE(cell.robot.mobile);
+  EXPECT_EQ(cell.robot.base.translation().z(), 0.0);
+  ASSERT_EQ(cell.furniture.size(), 1u);
+  EXPECT_EQ(cell.furniture[0].name, "table");
+  const Scene mobile = build_cell_scene(cell, options);
+  EXPECT_FALSE(mobile.robot.fixed_base);
+  save_cell(cell.file, cell);
+  EXPECT_TRUE(load_cell(cell.file).robot.mobile);
+
+  set_robot_mobile(cell, mobile, false);
+  EXPECT_FALSE(cell.robot.mobile);
+  EXPECT_DOUBLE_EQ(cell.robot.base.translation().z(), 0.75);
+  ASSERT_EQ(cell.furniture.size(), 2u);
+  EXPECT_EQ(cell.furniture[1].name, "pedestal");
+  EXPECT_FALSE(cell.furniture[1].auto_supports);
+  EXPECT_EQ(robot_pedestal(build_cell_scene(cell, options)), 1);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // handle deleted and the handles generated again, a part removed; every change one undo step,
 // written to the cell file at once and written back on undo. A bundled example is not changed
 // in place; a part too wide for the gripper and a part with events are refused with the reason.
+#include <QCheckBox>
+#include <QDir>
 #include <QLabel>
 #include <QListWidget>
 #include <QTemporaryDir>
@@ -129,6 +131,63 @@ private slots:
     QVERIFY(!panel_->replaceRobot({}, QString::fromStdString(bad), iiwa + QStringLiteral(".srdf")));
     QVERIFY2(panel_->lastError().contains(QStringLiteral("broken_arm.urdf")), qPrintable(panel_->lastError()));
     QVERIFY(doc_->cell()->robot.urdf.ends_with("kuka_iiwa.urdf"));
+  }
+
+  void aRobotFromDiskIsMadeMobileAndBackWithUndo() {
+    panel_->select(CellPanel::Kind::Robot, 0);
+    QCheckBox* mobile = panel_->mobileCheck();
+    QVERIFY(mobile->isVisible());
+    QVERIFY(!mobile->isEnabled());  // the bundled UR5: its data says it is fixed
+    QVERIFY(!mobile->isChecked());
+
+    // The UR5 read from its files: no planar base joints, refused with the reason, nothing changed.
+    const QString robots = ui::test::dataDir() + QStringLiteral("/robots/");
+    QVERIFY2(panel_->replaceRobot({}, robots + QStringLiteral("ur5/ur5.urdf"), robots + QStringLiteral("ur5/ur5.srdf")),
+             qPrintable(panel_->lastError()));
+    QVERIFY(mobile->isEnabled());
+    const int steps = doc_->undoStack()->count();
+    mobile->click();
+    QVERIFY2(panel_->lastError().contains(QStringLiteral("robot.mobile: ur5.urdf has no planar base joints")),
+             qPrintable(panel_->lastError()));
+    QVERIFY(!mobile->isChecked());
+    QVERIFY(!doc_->cell()->robot.mobile);
+    QCOMPARE(doc_->undoStack()->count(), steps);
+    panel_->resize(440, 720);  // about the Cell dock's size in a 1280 x 800 window
+    QDir().mkpath(ui::test::artifactDir() + QStringLiteral("/ui"));
+    QVERIFY(panel_->grab().save(ui::test::artifactDir() + QStringLiteral("/ui/cell-panel-mobile-refused.png")));
+
+    // The KMR read from its files: made mobile by a click, off its pedestal onto the floor.
+    const QString kmr = robots + QStringLiteral("kuka_kmr_iiwa/kuka_kmr_iiwa");
+    QVERIFY2(panel_->replaceRobot({}, kmr + QStringLiteral(".urdf"), kmr + QStringLiteral(".srdf")),
+             qPrintable(panel_->lastError()));
+    QCOMPARE(doc_->cell()->furniture.size(), size_t(2));
+    const int before = doc_->undoStack()->count();
+    mobile->click();
+    QVERIFY2(panel_->lastError().isEmpty(), qPrintable(panel_->lastError()));
+    QCOMPARE(doc_->undoStack()->count(), before + 1);
+    QVERIFY(mobile->isChecked());
+    QVERIFY(doc_->cell()->robot.mobile);
+    QVERIFY(!doc_->scene().robot.fixed_base);
+    QCOMPARE(doc_->cell()->robot.base.translation().z(), 0.0);
+    QCOMPARE(doc_->cell()->furniture.size(), size_t(1));  // the table; the pedestal is gone
+    QVERIFY(load_cell(doc_->cell()->file).robot.mobile);
+    QVERIFY(panel_->infoLabel()->text().contains(QStringLiteral("mobile robot")));
+    QVERIFY(panel_->grab().save(ui::test::artifactDir() + QStringLiteral("/ui/cell-panel-mobile-robot.png")));
+
+    // Undone: fixed on its pedestal again, in the file too; redone: mobile.
+    doc_->undoStack()->undo();
+    QVERIFY(!doc_->cell()->robot.mobile);
+    QVERIFY(!mobile->isChecked());
+    QCOMPARE(doc_->cell()->furniture.size(), size_t(2));
+    QVERIFY(!load_cell(doc_->cell()->file).robot.mobile);
+    doc_->undoStack()->redo();
+    QVERIFY(load_cell(doc_->cell()->file).robot.mobile);
+
+    // Made fixed by a click: a pedestal is put under it again.
+    mobile->click();
+    QVERIFY(!doc_->cell()->robot.mobile);
+    QCOMPARE(doc_->cell()->furniture.size(), size_t(2));
+    QCOMPARE(doc_->cell()->robot.base.translation().z(), 0.75);
   }
 
   void aPartFromAnStlRestsOnTheTableWithGrasps() {

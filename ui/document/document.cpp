@@ -8,6 +8,8 @@
 
 #include "core/cell/cell_edits.h"
 #include "core/cell/cell_scene.h"
+#include "core/demo/settle_demonstration.h"
+#include "core/demo/supported_rests.h"
 #include "core/error.h"
 #include "core/project/new_project.h"
 #include "core/placement/base_clearance.h"
@@ -228,7 +230,7 @@ void Document::install(Project p, std::shared_ptr<const Scene> scene, std::share
   selected_furniture_ = -1;
   display_mode_ = DisplayMode::Demonstration;
   playback_t_ = 0.0;
-  issues_ = validate(demonstration_);
+  refreshIssues();
   // Video and camera: a missing or unreadable file is reported on the Video step, not fatal.
   media_->load(p.video, p.camera, p.markers);
   frame_ = p.frame;
@@ -372,7 +374,7 @@ void Document::applyCell(const Cell& cell, std::shared_ptr<const Scene> scene, c
     extra_modified_ = true;
   }
   demonstration_ = demo;
-  issues_ = validate(demonstration_);
+  refreshIssues();
   if (selected_object_ >= static_cast<int>(demonstration_.object_ids.size())) selected_object_ = -1;
   if (selected_event_ >= static_cast<int>(demonstration_.events.size())) selected_event_ = -1;
   if (selected_furniture_ >= static_cast<int>(cell_ ? cell_->furniture.size() : 0)) selected_furniture_ = -1;
@@ -407,6 +409,7 @@ void Document::setRobotBase(const BasePose& base) {
 void Document::applySceneReference(const SceneReference& ref, std::shared_ptr<const Scene> scene) {
   scene_ref_ = ref;
   scene_ = std::move(scene);
+  refreshIssues();  // the robot's deck and support box moved with it
   emit sceneChanged();
   emit displayChanged();
 }
@@ -426,9 +429,18 @@ void Document::saveCellAs(const QString& file) {
 
 // ------------------------------------------------------------------------------ edits
 
+void Document::refreshIssues() {
+  issues_ = validate(demonstration_);
+  if (!issues_.empty() || !scene_) return;
+  // A part resting on no support fails the validator's placement test on every path: said here,
+  // before planning, as the plan job would (a rest within 2 cm of a support is settled onto it).
+  for (const UnsupportedRest& r : unsupported_rests(*scene_, settle_on_supports(*scene_, demonstration_)))
+    issues_.push_back({r.event, "frame " + std::to_string(r.frame) + ": " + r.message});
+}
+
 void Document::applyDemonstration(const Demonstration& demo, int selected_event) {
   demonstration_ = demo;
-  issues_ = validate(demonstration_);
+  refreshIssues();
   const int n = static_cast<int>(demo.events.size());
   selected_event_ = selected_event < n ? selected_event : -1;
   if (selected_event_ >= 0) selected_object_ = demo.events[selected_event_].object;

@@ -162,6 +162,8 @@ signals:
   void cellFileChanged();
 
 private:
+  // validate()'s rules, then the rests no support holds (supported_rests.h).
+  void refreshIssues();
   void loadScene(const SceneReference& ref, std::shared_ptr<const Scene>& scene,
                  std::shared_ptr<const BenchmarkTask>& task) const;
   void install(Project project, std::shared_ptr<const Scene> scene, std::shared_ptr<const BenchmarkTask> task,

@@ -4,6 +4,7 @@
 #include <QPointer>
 #include <chrono>
 
+#include "core/demo/supported_rests.h"
 #include "core/error.h"
 
 namespace demoplan::ui {
@@ -59,8 +60,9 @@ bool PlanRunner::start(PlanJob job) {
     auto outcome = std::make_shared<PlanOutcome>();
     try {
       const Scene& scene = *job.scene;
-      const PlanningProblem problem =
-          make_planning_problem(job.scene, job.demonstration, validation_task(job.demonstration, scene));
+      // A part resting on no support is refused here, naming the event, not after minutes of planning.
+      const Demonstration demo = settle_for_planning(scene, job.demonstration, job.demonstration_source);
+      const PlanningProblem problem = make_planning_problem(job.scene, demo, validation_task(demo, scene));
       outcome->graph = problem.graph;
       outcome->validated_against = problem.validation.source;
       post([graph = problem.graph](PlanRunner& r) { emit r.graphReady(graph); });

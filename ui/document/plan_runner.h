@@ -21,7 +21,8 @@ namespace demoplan::ui {
 
 struct PlanJob {
   std::shared_ptr<const Scene> scene;
-  Demonstration demonstration;
+  Demonstration demonstration;  // settled onto its supports before planning (settle_for_planning)
+  std::string demonstration_source = "demonstration";  // names it in errors
   PlannerSettings settings;
   std::string task, robot;
   int robot_pose = 0;

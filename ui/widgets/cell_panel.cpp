@@ -1,5 +1,6 @@
 #include "ui/widgets/cell_panel.h"
 
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -132,6 +133,12 @@ CellPanel::CellPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc
   info_ = new QLabel(this);
   info_->setWordWrap(true);
   layout->addWidget(info_);
+  mobile_ = new QCheckBox(tr("Mobile base (moves on the floor through its own x, y, yaw joints)"), this);
+  mobile_->setObjectName(QStringLiteral("robotMobile"));
+  connect(mobile_, &QCheckBox::toggled, this, [this](bool on) {
+    if (!refreshing_) setRobotMobile(on);
+  });
+  layout->addWidget(mobile_);
   pose_ = new PoseFields(tr("Pose in the world"), this);
   layout->addWidget(pose_);
   connect(pose_, &PoseFields::edited, this, [this](const Pose& T, int field) {
@@ -283,6 +290,7 @@ void CellPanel::showSelection() {
   markers_->setEnabled(part);
   delete_marker_->setEnabled(part);
   stick_marker_->setEnabled(cell && !cell->parts.empty());
+  mobile_->setVisible(s.kind == Kind::Robot);
   if (s.kind == Kind::None) {
     info_->setText(cell ? tr("Select the robot, a piece of furniture or a part to place it.") : QString());
     refreshing_ = false;
@@ -291,6 +299,13 @@ void CellPanel::showSelection() {
   if (s.kind == Kind::Robot) {
     pose_->setTitle(tr("Robot base in the world"));
     pose_->setPose(cell->robot.base, true);
+    const bool bundled = !cell->robot.bundled.empty();
+    mobile_->setChecked(cell->robot.mobile);
+    mobile_->setEnabled(!bundled);
+    mobile_->setToolTip(bundled ? tr("A bundled robot is mobile or not as its data says (the KMR iiwa is); "
+                                     "a robot from URDF and SRDF files can be made mobile here")
+                                : tr("For a URDF whose root is followed by x and y prismatic joints and a yaw joint: "
+                                     "the planner drives the base on the floor. A fixed robot stands on a pedestal"));
     const SceneRobot& r = doc_->scene().robot;
     const QString source = cell->robot.bundled.empty()
                                ? tr("%1 with %2").arg(fileName(cell->robot.urdf), fileName(cell->robot.srdf))
@@ -475,6 +490,22 @@ bool CellPanel::removeSelected() {
     selection_ = was;
     return false;
   }
+  return true;
+}
+
+bool CellPanel::setRobotMobile(bool mobile) {
+  if (!doc_->cell()) return false;
+  Cell after = *doc_->cell();
+  try {
+    set_robot_mobile(after, doc_->scene(), mobile);
+  } catch (const InputError& e) {
+    showError(q(e.what()));
+    showSelection();  // the box goes back to what the cell holds
+    return false;
+  }
+  if (after.robot.mobile == doc_->cell()->robot.mobile) return true;
+  if (!edit(after, mobile ? tr("Make the robot mobile") : tr("Make the robot fixed"))) return false;
+  select(Kind::Robot, 0);
   return true;
 }
 

@@ -3,13 +3,14 @@
 // placed by typing millimetres and degrees; parts added from mesh files (put down on a free spot
 // of a support), furniture as a box, a cylinder, a mesh file or a URDF; a part's handles listed,
 // one deleted or all generated again; the robot replaced by a bundled one or a URDF + SRDF from
-// disk; ArUco markers stuck on a part by clicking its face in the 3D view (Stick Markers),
+// disk, and one from disk made mobile; ArUco markers stuck on a part by clicking its face in the 3D view (Stick Markers),
 // listed, deleted. Every change is one undo step and is written to the cell file at once
 // (Document::editCell); a bundled example is first saved under the user's own name.
 #include <QWidget>
 
 #include "ui/document/document.h"
 
+class QCheckBox;
 class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
@@ -43,6 +44,10 @@ public:
   // The cell's robot replaced by a bundled one (`bundled`), or by the robot of `urdf` and `srdf`
   // from disk when `bundled` is empty; the parts' generated handles follow the new gripper.
   bool replaceRobot(const QString& bundled, const QString& urdf = {}, const QString& srdf = {});
+  // The robot from disk made mobile (moved on the floor through its own x, y, yaw joints: off its
+  // pedestal) or fixed (a pedestal under it when it stands on nothing); refused, with the reason,
+  // for a bundled robot and for a URDF without planar base joints.
+  bool setRobotMobile(bool mobile);
   bool deleteHandle(int part, int handle);
   bool regenerateHandles(int part);
   // A marker stuck on `part` (cell index) at `point` on the face with outward `normal` (part
@@ -61,6 +66,7 @@ public:
   QListWidget* handleList() const { return handles_; }
   QListWidget* markerList() const { return markers_; }
   QLabel* infoLabel() const { return info_; }
+  QCheckBox* mobileCheck() const { return mobile_; }
 
 private:
   void refresh();
@@ -80,6 +86,7 @@ private:
   QTreeWidget* tree_;
   QLabel* file_label_;
   QLabel* info_;
+  QCheckBox* mobile_;
   PoseFields* pose_;
   QListWidget* handles_;
   QPushButton* delete_handle_;
