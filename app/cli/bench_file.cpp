@@ -38,9 +38,11 @@ nlohmann::json run_json(const BenchRun& r) {
                    {"nodes", r.nodes},
                    {"path_length_rad", r.raw.length.robot},
                    {"grasps", r.raw.grasps},
+                   {"gripper_closes", r.raw.gripper_closes},
                    {"shortened_valid", r.solved && r.shortened.valid},
                    {"shortened_path_length_rad", r.shortened.length.robot},
                    {"shortened_grasps", r.shortened.grasps},
+                   {"shortened_gripper_closes", r.shortened.gripper_closes},
                    {"shortcut_time_s", r.shortcut_s}};
   if (!r.regrasp.empty()) j["regrasp"] = r.regrasp;
   return j;
@@ -63,9 +65,13 @@ BenchRun read_run(const JsonField& j, size_t run_count) {
   r.raw.valid = j["valid"].boolean();
   r.raw.length.robot = j["path_length_rad"].number();
   r.raw.grasps = j["grasps"].integer();
+  // Files written before gripper_closes was recorded: the benchmark's count stands in.
+  r.raw.gripper_closes = j.has("gripper_closes") ? j["gripper_closes"].integer() : r.raw.grasps;
   r.shortened.valid = j["shortened_valid"].boolean();
   r.shortened.length.robot = j["shortened_path_length_rad"].number();
   r.shortened.grasps = j["shortened_grasps"].integer();
+  r.shortened.gripper_closes =
+      j.has("shortened_gripper_closes") ? j["shortened_gripper_closes"].integer() : r.shortened.grasps;
   r.shortcut_s = j["shortcut_time_s"].number();
   if (j.has("regrasp")) r.regrasp = j["regrasp"].string();
   return r;

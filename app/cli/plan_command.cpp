@@ -83,13 +83,14 @@ int run_plan(const PlanOptions& o) {
   const ValidationReport& v = s.validation;
   std::cerr << "  validator (" << problem.validation.source << "): " << (v.valid ? "valid" : "INVALID: " + v.message) << "; length robot "
             << v.length.robot << " rad, objects " << v.length.object_translation << " m / " << v.length.object_rotation
-            << " rad, " << v.grasps << " grasps\n";
+            << " rad, " << describe_grasps(v.grasps, v.gripper_closes) << "\n";
   j["validated_against"] = problem.validation.source;
   j["valid"] = v.valid;
   j["validation_message"] = v.message;
   j["path_length"] = {{"robot_rad", v.length.robot}, {"object_m", v.length.object_translation},
                       {"object_rad", v.length.object_rotation}};
   j["grasps"] = v.grasps;
+  j["gripper_closes"] = v.gripper_closes;
   j["waypoints"] = path.waypoints.size();
   if (!o.out.empty()) {
     save_path(o.out, path);

@@ -26,7 +26,8 @@ int run_validate(const ValidateOptions& o) {
   const bool by_demo = !o.inputs.cell.empty() || !o.inputs.demo.empty();
   const LoadedTask t = by_demo ? load_task_inputs(o.inputs) : LoadedTask{load_benchmark_task(o.inputs.data_dir, o.inputs.task), {}};
   const std::shared_ptr<const Scene> scene_ptr =
-      by_demo ? t.instance.problem.scene : std::make_shared<const Scene>(build_benchmark_scene(t.task, o.inputs.robot, o.inputs.pose));
+      by_demo ? t.instance.problem.scene
+              : benchmark_scene_with_handles(t.task, o.inputs.robot, o.inputs.pose, o.inputs.handles, nullptr);
   const Scene& scene = *scene_ptr;
   const std::string what = by_demo ? (o.inputs.cell.empty() ? o.inputs.demo : o.inputs.cell) : o.inputs.task;
   if (path.joint_names.size() != static_cast<size_t>(scene.robot.model.nq))
@@ -39,7 +40,8 @@ int run_validate(const ValidateOptions& o) {
       validate_path(scene, by_demo ? t.instance.problem.validation : validation_task(t.task, scene), path);
   std::cerr << o.path_file << " on " << scene.name << ": " << (v.valid ? "valid" : "INVALID: " + v.message)
             << "\n  length: robot " << v.length.robot << " rad, objects " << v.length.object_translation << " m / "
-            << v.length.object_rotation << " rad; " << v.grasps << " grasps; " << v.samples << " samples\n";
+            << v.length.object_rotation << " rad; " << describe_grasps(v.grasps, v.gripper_closes) << "; " << v.samples
+            << " samples\n";
   nlohmann::json grasps = nlohmann::json::array();
   for (const auto& g : v.counted_grasps) {
     std::cerr << "  grasp at t = " << g.t << ": " << g.object << " by " << g.handle << "\n";
@@ -53,6 +55,7 @@ int run_validate(const ValidateOptions& o) {
                                                  {"object_m", v.length.object_translation},
                                                  {"object_rad", v.length.object_rotation}}},
                                 {"grasps", v.grasps},
+                                {"gripper_closes", v.gripper_closes},
                                 {"counted_grasps", grasps},
                                 {"samples", v.samples}}
                      .dump()

@@ -16,7 +16,7 @@
 //             "handles": "auto" | [{"name", "pose", "clearance"}],
 //             "markers": [{"id": 3, "size": 0.03, "pose": {...}}]}],
 //  "marker_dictionary": "DICT_4X4_100",
-//  "grasping": {"palm_clearance": 0.005, "max_handles": 24}}
+//  "grasping": {"palm_clearance": 0.005, "max_handles": 48}}
 // Poses are {"xyz": [m], "rpy": [rad]} (URDF's roll-pitch-yaw), both optional. Furniture
 // poses place the shape's centre (box, cylinder) or its file's origin (mesh, URDF) in the world.
 // File paths are relative to the cell file and held absolute in memory. "auto" supports are the
@@ -85,7 +85,7 @@ struct CellPart {
 
 struct CellGrasping {
   double palm_clearance = 0.005;  // m
-  int max_handles = 24;
+  int max_handles = 48;
 };
 
 struct Cell {

@@ -265,19 +265,28 @@ private:
       if (grasp_at(lo - o_.palm_clearance, back)) best = back, lo -= o_.palm_clearance;
       // Centred: the fingers close across the centre of mass (only the offset across the
       // fingers is a choice; depth and the midpoint between the contacts follow from the part).
-      const double lateral = std::abs((best.centre - com_).dot(y));
-      const double centred = 1.0 - std::min(1.0, lateral / std::max(0.5 * (ymax - ymin), 1e-6));
-      const double engaged = std::min(1.0, (lo - xmin) / 0.03);
-      const double flat = flatness(lines, best, x, y);
-      GeneratedHandle h;
-      h.width = best.width;
-      h.quality = 0.35 * best.antipodality + 0.35 * centred + 0.15 * flat + 0.15 * engaged;
-      h.frame.pose = frame(best.centre, x, y, z);
-      h.frame.clearance = std::min(gripper_.opening, best.width + 2 * o_.width_margin);
-      found.push_back(h);
-      // The same grasp with the fingers swapped (turned half a turn about the approach).
-      h.frame.pose = frame(best.centre, x, -y, -z);
-      found.push_back(h);
+      auto add = [&](const Line& l, double depth) {
+        const double lateral = std::abs((l.centre - com_).dot(y));
+        const double centred = 1.0 - std::min(1.0, lateral / std::max(0.5 * (ymax - ymin), 1e-6));
+        const double engaged = std::min(1.0, (depth - xmin) / 0.03);
+        const double flat = flatness(lines, l, x, y);
+        GeneratedHandle h;
+        h.width = l.width;
+        h.quality = 0.35 * l.antipodality + 0.35 * centred + 0.15 * flat + 0.15 * engaged;
+        h.frame.pose = frame(l.centre, x, y, z);
+        h.frame.clearance = std::min(gripper_.opening, l.width + 2 * o_.width_margin);
+        found.push_back(h);
+        // The same grasp with the fingers swapped (turned half a turn about the approach).
+        h.frame.pose = frame(l.centre, x, -y, -z);
+        found.push_back(h);
+      };
+      add(best, lo);
+      // Shallower ones too, nearer the side the hand comes from: an arm that cannot reach the
+      // deepest grasp (a shelf's board above, a corner) may reach these.
+      for (double a = lo - o_.depth_variant_step; a - xmin >= o_.min_engagement; a -= o_.depth_variant_step) {
+        Line l;
+        if (grasp_at(a, l)) add(l, a);
+      }
     }
   }
 

@@ -2,8 +2,9 @@
 // Grasp handles for a parallel-jaw gripper from a part's mesh alone: closing lines whose two
 // outermost contacts face each other within the friction cone and fit the opening, approached
 // from directions in which the open hand stays out of the part (FCL against the hand's
-// collision geometry), each pushed as deep into the hand as the palm allows, then clustered into
-// a few distinct handles, the best first. They are the benchmark SRDF's kind of handle (x: the
+// collision geometry), each pushed as deep into the hand as the palm allows and also held
+// shallower in 15 mm steps (an arm that cannot reach deep may reach these), then clustered into
+// distinct handles, the best first. They are the benchmark SRDF's kind of handle (x: the
 // approach, z: the closing direction, clearance: the opening they need), so the planner takes
 // them as it takes hand-made ones.
 //
@@ -41,11 +42,13 @@ struct GraspOptions {
   double depth_step = 0.01;        // m: coarse step of the depth search (refined by bisection)
   double depth_tolerance = 0.001;  // m: resolution of the depth search
   double palm_clearance = 0.005;   // m left between part and hand at the deepest grasp
+  double depth_variant_step = 0.015;  // m between the deepest grasp and shallower ones ...
+  double min_engagement = 0.015;      // m: ... as long as this much of the part is between the fingers
   double width_margin = 0.002;     // m: each finger's travel left when it touches
   double min_width = 0.004;        // m: thinner features are not grasped
-  double cluster_distance = 0.02;  // m: handles closer than this ...
-  double cluster_angle = 0.35;     // rad (20 deg): ... and turned less than this are one handle
-  int max_handles = 24;
+  double cluster_distance = 0.015;  // m: handles closer than this ...
+  double cluster_angle = 0.25;     // rad (14 deg): ... and turned less than this are one handle
+  int max_handles = 48;
 };
 
 struct GeneratedHandle {

@@ -27,6 +27,7 @@ Json result_to_json(const ResultSummary& r, const std::string& file) {
               {"length_object_m", r.length_object_m},
               {"length_object_rad", r.length_object_rad},
               {"grasps", r.grasps},
+              {"gripper_closes", r.gripper_closes},
               {"shortened", r.shortened},
               {"demonstration_digest", r.demonstration_digest}};
 }
@@ -53,6 +54,8 @@ ResultSummary result_from_json(const JsonField& j, const std::string& file) {
   r.length_object_m = j["length_object_m"].number();
   r.length_object_rad = j["length_object_rad"].number();
   r.grasps = j["grasps"].integer();
+  // Projects saved before the gripper closes were recorded: the benchmark's count stands in.
+  r.gripper_closes = j.has("gripper_closes") ? j["gripper_closes"].integer() : r.grasps;
   r.shortened = j.has("shortened") && j["shortened"].boolean();
   r.demonstration_digest = j.has("demonstration_digest") ? j["demonstration_digest"].string() : "";
   return r;
@@ -80,6 +83,7 @@ ResultSummary summarize(const PlanReport& report, const std::string& validated_a
   s.length_object_m = v.length.object_translation;
   s.length_object_rad = v.length.object_rotation;
   s.grasps = v.grasps;
+  s.gripper_closes = v.gripper_closes;
   s.shortened = report.shortened;
   return s;
 }

@@ -59,7 +59,8 @@ struct ResultSummary {
   double length_robot_rad = 0.0;
   double length_object_m = 0.0;
   double length_object_rad = 0.0;
-  int grasps = 0;
+  int grasps = 0;          // as the benchmark counts them (path_validator.h)
+  int gripper_closes = 0;  // the path's own grasp actions
   bool shortened = false;
   std::string demonstration_digest;  // of the demonstration it was planned for
 };

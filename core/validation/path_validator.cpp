@@ -1,5 +1,6 @@
 #include "core/validation/path_validator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -68,6 +69,8 @@ struct GraspPair {
 ValidationReport validate_path(const Scene& scene, const ValidationTask& task, const Path& path,
                                const ValidationOptions& o) {
   ValidationReport r;
+  r.gripper_closes = static_cast<int>(std::count_if(path.waypoints.begin(), path.waypoints.end(),
+                                                    [](const Waypoint& w) { return w.action == GripperAction::Grasp; }));
   auto fail = [&](const std::string& why, double t) {
     r.valid = false;
     r.message = why + (t >= 0 ? at(t) : "");
@@ -179,6 +182,13 @@ ValidationReport validate_path(const Scene& scene, const ValidationTask& task, c
   r.valid = true;
   r.message = "ok";
   return r;
+}
+
+std::string describe_grasps(int grasps, int gripper_closes) {
+  const std::string counted = std::to_string(grasps) + (grasps == 1 ? " grasp" : " grasps");
+  if (grasps == gripper_closes) return counted;
+  return counted + " as the benchmark counts them, " + std::to_string(gripper_closes) +
+         (gripper_closes == 1 ? " gripper close" : " gripper closes");
 }
 
 }  // namespace demoplan

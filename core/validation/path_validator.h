@@ -55,10 +55,17 @@ struct ValidationReport {
   PathLength length;    // on the benchmark's samples
   int grasps = 0;
   std::vector<CountedGrasp> counted_grasps;  // grasps.size() of them, in order
+  // The path's own grasp actions: the gripper closes of the robot program. `grasps` counts more
+  // when the gripper frame meets another handle on its way (a shallower handle on the approach
+  // to a deeper one, as generated handles have): the benchmark counts that as a grasp too.
+  int gripper_closes = 0;
   size_t samples = 0;
 };
 
 ValidationReport validate_path(const Scene& scene, const ValidationTask& task, const Path& path,
                                const ValidationOptions& options = {});
+
+// "2 grasps", or "3 grasps as the benchmark counts them, 1 gripper close" when they differ.
+std::string describe_grasps(int grasps, int gripper_closes);
 
 }  // namespace demoplan

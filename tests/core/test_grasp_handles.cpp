@@ -122,11 +122,11 @@ TEST(GraspHandles, YcbvPartsGetHandlesCloseToTheHandMadeOnes) {
     total += static_cast<int>(srdf.handles.size());
   }
   std::printf("all parts: %d of %d\n", matched, total);
-  // Measured 41 of 76 (2026-12-03; 36 before the approaches followed a part's own long side:
-  // obj_000007 0 -> 5 of 8). The misses are hand-made choices no rule of ours makes: grasps 1 to
-  // 3 cm shallower than ours, which go as deep as the palm allows (capped at the centre of mass),
-  // corner grasps at 45 degrees, and more distinct grasps than the 24 we keep (obj_000021).
-  EXPECT_GE(matched, 40);
+  // Measured 56 of 76 (2026-12-03; 36 with the deepest grasp only and the mesh frame's axes,
+  // 41 with the part's own long side). The misses are hand-made choices no rule of ours makes:
+  // rim grasps at 45 degrees (obj_000002/3), closing directions we rank below the 48 we keep
+  // (obj_000021's 24 handles close in three directions), a grasp 3 cm off the centre (obj_000012).
+  EXPECT_GE(matched, 54);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "ui/widgets/result_panel.h"
 
+#include "core/validation/path_validator.h"
+
 #include <QComboBox>
 #include <QDateTime>
 #include <QGridLayout>
@@ -229,7 +231,7 @@ void ResultPanel::refresh() {
                           .arg(s.shortened ? tr(", shortened") : QString())
                           .arg(s.length_object_m * 1000, 0, 'f', 0)
                           .arg(s.length_object_rad * 180 / M_PI, 0, 'f', 0)
-                          .arg(s.grasps));
+                          .arg(QString::fromStdString(describe_grasps(s.grasps, s.gripper_closes))));
   } else {
     metrics_->setText(tr("%1 s, %L2 iterations, %3 trees, %L4 nodes")
                           .arg(s.planning_time_s, 0, 'f', 2)
