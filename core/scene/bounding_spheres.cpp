@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace demoplan {
 
@@ -160,6 +161,44 @@ BoundingSphere enclose_pieces(const std::vector<Piece>& ps, const std::vector<si
   return enclose(corners);
 }
 
+// Up to `count` edges of the triangles: each time the edge that is longest plus farthest (its
+// midpoint from the chosen ones' midpoints), so that long edges come first and spread over the
+// mesh. The endpoints are the mesh's own vertices, as FCL's triangles have them.
+std::vector<std::array<Vec, 2>> long_spread_edges(const std::vector<Vec>& vertices,
+                                                  const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                                  int count) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> unique;
+  unique.reserve(3 * triangles.size());
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) unique.emplace_back(std::minmax(t[k], t[(k + 1) % 3]));
+  std::sort(unique.begin(), unique.end());
+  unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
+  std::vector<double> length(unique.size()), gap(unique.size(), std::numeric_limits<double>::infinity());
+  std::vector<Vec> mid(unique.size());
+  for (size_t i = 0; i < unique.size(); ++i) {
+    const Vec& a = vertices[unique[i].first];
+    const Vec& b = vertices[unique[i].second];
+    length[i] = (b - a).norm();
+    mid[i] = 0.5 * (a + b);
+  }
+  std::vector<std::array<Vec, 2>> out;
+  std::vector<char> taken(unique.size(), 0);
+  while (out.size() < static_cast<size_t>(count)) {
+    size_t best = unique.size();
+    double best_score = -1.0;
+    for (size_t i = 0; i < unique.size(); ++i) {
+      if (taken[i] || !(length[i] > 0.0)) continue;
+      const double score = length[i] + (out.empty() ? 0.0 : std::sqrt(gap[i]));
+      if (score > best_score) best_score = score, best = i;
+    }
+    if (best == unique.size()) break;  // every edge chosen
+    taken[best] = 1;
+    out.push_back({vertices[unique[best].first], vertices[unique[best].second]});
+    for (size_t i = 0; i < unique.size(); ++i) gap[i] = std::min(gap[i], (mid[i] - mid[best]).squaredNorm());
+  }
+  return out;
+}
+
 }  // namespace
 
 SphereSet fit_bounding_spheres(const std::vector<Eigen::Vector3d>& vertices,
@@ -207,6 +246,7 @@ SphereSet fit_bounding_spheres(const std::vector<Eigen::Vector3d>& vertices,
     }
     if (far == 0.0) break;  // every corner chosen
   }
+  set.edges = long_spread_edges(vertices, triangles, SphereSet::kEdges);
   return set;
 }
 

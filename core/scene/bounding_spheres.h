@@ -30,6 +30,11 @@ struct SphereSet {
   // lies inside a solid primitive proves contact (geometry_bounds.h, certainly_touching).
   std::vector<Eigen::Vector3d> witnesses;
   static constexpr int kWitnesses = 32;
+  // Triangle edges, long ones spread over the mesh (at most kEdges): an edge lies in a
+  // triangle, so one that crosses a solid primitive proves contact too, where no corner lies
+  // inside (an arm through a thin board).
+  std::vector<std::array<Eigen::Vector3d, 2>> edges;
+  static constexpr int kEdges = 32;
 };
 
 // Radius margin added to every fitted sphere: 1 micrometre plus 1e-9 of the sphere's distance

@@ -98,7 +98,8 @@ struct CollisionData::Workspace {
   // Fast path: world sphere centres of the robot and object geometries, placed when a pair
   // first needs them in a query (GeomInfo::centre_offset, slot).
   std::vector<Eigen::Vector3d> centres, children;
-  std::vector<std::uint64_t> placed_at;     // per slot: the query they were placed for
+  std::vector<std::uint64_t> placed_at;     // per slot: the query the whole's centre was placed for
+  std::vector<std::uint64_t> parts_placed;  // per slot: the same for the parts' centres
   std::vector<std::uint64_t> child_placed;  // per part of every geometry: the same for its children
   std::uint64_t query = 0;
 };
@@ -160,16 +161,16 @@ struct CollisionChecker::Impl {
   };
 
   PlacedBound placed(Workspace& d, const CollisionObjectd& o, const GeomInfo& g) const {
-    if (g.owner == Owner::Furniture)  // all placed at construction: children never written
-      return {&g.bound, &o.getTransform(), furniture_centres.data() + g.centre_offset,
-              const_cast<Eigen::Vector3d*>(furniture_children.data()) + g.child_offset, nullptr, 0};
+    if (g.owner == Owner::Furniture)  // all placed at construction: never written
+      return {&g.bound, &o.getTransform(), const_cast<Eigen::Vector3d*>(furniture_centres.data()) + g.centre_offset,
+              const_cast<Eigen::Vector3d*>(furniture_children.data()) + g.child_offset, nullptr, 0, nullptr};
     Eigen::Vector3d* c = d.centres.data() + g.centre_offset;
     if (d.placed_at[g.slot] != d.query) {
-      place_centres(g.bound, o.getTransform(), c);
+      place_whole_centre(g.bound, o.getTransform(), c);
       d.placed_at[g.slot] = d.query;
     }
     return {&g.bound, &o.getTransform(), c, d.children.data() + g.child_offset, d.child_placed.data() + g.part_offset,
-            d.query};
+            d.query, d.parts_placed.data() + g.slot};
   }
 
   bool skip_furniture(const GeomInfo& moving, const GeomInfo& f, const AllowedContacts& allowed) const {
@@ -431,6 +432,7 @@ CollisionData CollisionChecker::make_data() const {
   d.w_->children.resize(impl_->moving_children);
   d.w_->child_placed.assign(impl_->moving_parts, 0);
   d.w_->placed_at.assign(impl_->robot.size() + impl_->objects.size(), 0);
+  d.w_->parts_placed.assign(impl_->robot.size() + impl_->objects.size(), 0);
   return d;
 }
 

@@ -5,8 +5,9 @@
 // geometry (robot links, objects) queries it. Moving-vs-moving pairs are listed once at
 // construction and pruned per query by their world AABBs before the narrow phase. Each pair
 // left is first tested on cheap exact bounds (CollisionOptions::fast_path): bounding spheres or
-// the exact primitive, a self pair's distance table (joint_pair_table.h), and a corner of one
-// body inside the other primitive; it goes to FCL's narrow phase only when they cannot decide.
+// the exact primitive, a self pair's distance table (joint_pair_table.h), and a corner or an
+// edge of one body inside the other primitive; it goes to FCL's narrow phase only when they
+// cannot decide.
 // The checker is immutable after construction, but for the self pairs' distance tables, filled
 // on demand by any thread; each thread passes its own CollisionData.
 #include <Eigen/Core>
@@ -53,7 +54,7 @@ struct CollisionOptions {
   bool skip_adjacent_links = true;
   // Before FCL's narrow phase, test the pair's bounds (spheres fitted to meshes, exact boxes,
   // cylinders and spheres, self pairs' distance tables) and skip FCL when they are certainly
-  // apart, or certainly touching (a corner inside a primitive; geometry_bounds.h).
+  // apart, or certainly touching (a corner or an edge inside a primitive; geometry_bounds.h).
   // Answers and reported pairs are the same either way; off: FCL alone, for comparison.
   bool fast_path = true;
 };

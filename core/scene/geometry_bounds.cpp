@@ -1,7 +1,10 @@
 #include "core/scene/geometry_bounds.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/geometry/box_overlap.h"
@@ -13,7 +16,7 @@ namespace {
 using Vec = Eigen::Vector3d;
 
 GeometryBound primitive(GeometryBound::Kind kind, const Vec& half, double circumradius,
-                        std::vector<Vec> witnesses = {}) {
+                        std::vector<Vec> witnesses = {}, std::vector<std::array<Vec, 2>> edges = {}) {
   GeometryBound b;
   b.kind = kind;
   b.half = half;
@@ -24,6 +27,7 @@ GeometryBound primitive(GeometryBound::Kind kind, const Vec& half, double circum
   set->children = {set->all};
   set->children_begin = {0, 1};
   set->witnesses = std::move(witnesses);
+  set->edges = std::move(edges);
   b.spheres = std::move(set);
   return b;
 }
@@ -52,6 +56,17 @@ double squared_distance(const GeometryBound& p, const Vec& x) {
   }
 }
 
+// The world centres of the whole (index 0) and the parts (1...), the parts placed now if this
+// query has not yet.
+const Vec* centres_of(const PlacedBound& b) {
+  if (b.parts_placed && *b.parts_placed != b.stamp) {
+    const SphereSet& s = *b.bound->spheres;
+    for (size_t i = 0; i < s.parts.size(); ++i) b.centres[1 + i] = *b.pose * s.parts[i].centre;
+    *b.parts_placed = b.stamp;
+  }
+  return b.centres;
+}
+
 // The world centres of part `i`'s children, placed now if this query has not yet.
 const Vec* children_of(const PlacedBound& b, size_t i) {
   const SphereSet& s = *b.bound->spheres;
@@ -73,8 +88,9 @@ bool spheres_apart_from_primitive(const PlacedBound& a, const PlacedBound& p) {
   };
   const SphereSet& s = *a.bound->spheres;
   if (apart(a.centres[0], s.all.radius)) return true;
+  const Vec* centres = centres_of(a);
   for (size_t i = 0; i < s.parts.size(); ++i) {
-    if (apart(a.centres[1 + i], s.parts[i].radius)) continue;
+    if (apart(centres[1 + i], s.parts[i].radius)) continue;
     const Vec* c = children_of(a, i);
     for (int k = s.children_begin[i]; k < s.children_begin[i + 1]; ++k)
       if (!apart(c[k], s.children[k].radius)) return false;
@@ -86,12 +102,15 @@ bool sphere_sets_apart(const PlacedBound& a, const PlacedBound& b) {
   const SphereSet& sa = *a.bound->spheres;
   const SphereSet& sb = *b.bound->spheres;
   if (spheres_apart(a.centres[0], sa.all.radius, b.centres[0], sb.all.radius)) return true;
+  const Vec* a_centres = centres_of(a);
+  const Vec* b_centres = nullptr;
   for (size_t i = 0; i < sa.parts.size(); ++i) {
-    const Vec& ca = a.centres[1 + i];
+    const Vec& ca = a_centres[1 + i];
     const double ra = sa.parts[i].radius;
     if (spheres_apart(ca, ra, b.centres[0], sb.all.radius)) continue;
+    if (!b_centres) b_centres = centres_of(b);
     for (size_t j = 0; j < sb.parts.size(); ++j) {
-      const Vec& cb = b.centres[1 + j];
+      const Vec& cb = b_centres[1 + j];
       const double rb = sb.parts[j].radius;
       if (spheres_apart(ca, ra, cb, rb)) continue;
       // Parts i and j may touch: part i's children against part j, then against its children.
@@ -141,15 +160,58 @@ double depth_inside(const GeometryBound& p, const Vec& x) {
   }
 }
 
-// Some witness of `w` inside the solid primitive `p`.
+// A candidate for the deepest point of the segment [a, b] (in the primitive's frame) inside the
+// solid primitive `p`, or nothing when the segment misses `p` shrunk by `shrink`: the middle of
+// the part inside the shrunk box (box; the cylinder's end caps), the point nearest the axis
+// (cylinder) or the centre (sphere). Only a search: the caller checks the point's depth.
+std::optional<Vec> probe_point(const GeometryBound& p, const Vec& a, const Vec& b, double shrink) {
+  const Vec d = b - a;
+  double lo = 0.0, hi = 1.0;
+  auto clip = [&](int k, double half) {  // keep the t where |a[k] + t d[k]| < half
+    if (!(half > 0.0)) return false;
+    if (d[k] == 0.0) return std::abs(a[k]) < half;
+    double t1 = (-half - a[k]) / d[k], t2 = (half - a[k]) / d[k];
+    if (t1 > t2) std::swap(t1, t2);
+    lo = std::max(lo, t1);
+    hi = std::min(hi, t2);
+    return lo < hi;
+  };
+  auto nearest = [&](const Vec& dir, const Vec& from) {  // t of the point nearest the origin, in [lo, hi]
+    const double dd = dir.squaredNorm();
+    return dd > 0.0 ? std::clamp(-from.dot(dir) / dd, lo, hi) : 0.5 * (lo + hi);
+  };
+  switch (p.kind) {
+    case GeometryBound::Kind::Box:
+      for (int k = 0; k < 3; ++k)
+        if (!clip(k, p.half[k] - shrink)) return std::nullopt;
+      return a + 0.5 * (lo + hi) * d;
+    case GeometryBound::Kind::Cylinder: {
+      if (!clip(2, p.half.z() - shrink)) return std::nullopt;
+      return a + nearest(Vec(d.x(), d.y(), 0.0), Vec(a.x(), a.y(), 0.0)) * d;
+    }
+    case GeometryBound::Kind::Sphere:
+      return a + nearest(d, a) * d;
+    default:
+      return std::nullopt;
+  }
+}
+
+// Some witness of `w` inside the solid primitive `p`: a corner, or a point of an edge (a mesh's
+// triangle edge, a box's edge), deeper than the margin.
 bool witness_inside(const PlacedBound& w, const PlacedBound& p) {
-  if (!is_primitive(*p.bound) || !w.bound->spheres || w.bound->spheres->witnesses.empty()) return false;
+  if (!is_primitive(*p.bound) || !w.bound->spheres) return false;
+  const SphereSet& s = *w.bound->spheres;
+  if (s.witnesses.empty() && s.edges.empty()) return false;
   const Eigen::Matrix3d Rt = p.pose->linear().transpose();
   const Eigen::Matrix3d R = Rt * w.pose->linear();
   const Vec t = Rt * (w.pose->translation() - p.pose->translation());
   const double margin = margin_between(w, p);
-  for (const Vec& v : w.bound->spheres->witnesses)
+  for (const Vec& v : s.witnesses)
     if (depth_inside(*p.bound, R * v + t) > margin) return true;
+  for (const auto& [a, b] : s.edges) {
+    const std::optional<Vec> x = probe_point(*p.bound, R * a + t, R * b + t, 2.0 * margin);
+    if (x && depth_inside(*p.bound, *x) > margin) return true;
+  }
   return false;
 }
 
@@ -160,7 +222,12 @@ GeometryBound box_bound(const Eigen::Vector3d& size) {
   std::vector<Vec> corners;
   for (int i = 0; i < 8; ++i)
     corners.emplace_back(i & 1 ? half.x() : -half.x(), i & 2 ? half.y() : -half.y(), i & 4 ? half.z() : -half.z());
-  return primitive(GeometryBound::Kind::Box, half, half.norm(), std::move(corners));
+  // Its 12 edges: corners i and i + 2^k that differ along axis k only.
+  std::vector<std::array<Vec, 2>> edges;
+  for (int i = 0; i < 8; ++i)
+    for (int k = 0; k < 3; ++k)
+      if (!(i & (1 << k))) edges.push_back({corners[i], corners[i | (1 << k)]});
+  return primitive(GeometryBound::Kind::Box, half, half.norm(), std::move(corners), std::move(edges));
 }
 
 GeometryBound cylinder_bound(double radius, double length) {
@@ -177,6 +244,10 @@ GeometryBound mesh_bound(std::shared_ptr<const SphereSet> spheres) {
   b.kind = GeometryBound::Kind::Mesh;
   b.spheres = std::move(spheres);
   return b;
+}
+
+void place_whole_centre(const GeometryBound& bound, const Pose& pose, Eigen::Vector3d* out) {
+  if (bound.spheres) out[0] = pose * bound.spheres->all.centre;
 }
 
 void place_centres(const GeometryBound& bound, const Pose& pose, Eigen::Vector3d* out) {

@@ -33,30 +33,34 @@ GeometryBound cylinder_bound(double radius, double length);
 GeometryBound sphere_bound(double radius);
 GeometryBound mesh_bound(std::shared_ptr<const SphereSet> spheres);
 
-// A bound at a world pose, with its sphere centres in the world: the whole's and the parts'
-// placed (place_centres), the children's placed per part when a test first needs them
-// (child_placed[part] != stamp), or all placed beforehand (child_placed null).
+// A bound at a world pose, with its sphere centres in the world: the whole's placed
+// (place_centres), the parts' too or placed when a test first needs them (*parts_placed !=
+// stamp), the children's placed per part when a test first needs them (child_placed[part] !=
+// stamp); null stamps: all placed beforehand. Most pairs are told apart by the whole sphere.
 struct PlacedBound {
   const GeometryBound* bound = nullptr;
   const Pose* pose = nullptr;
-  const Eigen::Vector3d* centres = nullptr;  // bound->centre_count() of them
-  Eigen::Vector3d* children = nullptr;       // bound->child_count() of them
-  std::uint64_t* child_placed = nullptr;     // bound->part_count() of them
+  Eigen::Vector3d* centres = nullptr;     // bound->centre_count() of them
+  Eigen::Vector3d* children = nullptr;    // bound->child_count() of them
+  std::uint64_t* child_placed = nullptr;  // bound->part_count() of them
   std::uint64_t stamp = 0;
+  std::uint64_t* parts_placed = nullptr;  // one
 };
 
-// Writes bound.centre_count() world centres to `out`.
+// Writes bound.centre_count() world centres to `out`, or only the whole's (out[0]).
 void place_centres(const GeometryBound& bound, const Pose& pose, Eigen::Vector3d* out);
+void place_whole_centre(const GeometryBound& bound, const Pose& pose, Eigen::Vector3d* out);
 // Writes bound.child_count() world centres to `out`.
 void place_children(const GeometryBound& bound, const Pose& pose, Eigen::Vector3d* out);
 
 // True only if the two placed bodies certainly do not touch.
 bool certainly_separated(const PlacedBound& a, const PlacedBound& b);
 
-// True only if they certainly touch as FCL sees them: a witness of one (a mesh's triangle
-// corner, a box's corner) lies inside the other, a solid box, cylinder or sphere, by more than
-// the margin. FCL tests a mesh's triangles and a box's solid against the solid primitive, so it
-// finds that contact too. (Two meshes are never proven touching: FCL sees only surfaces.)
+// True only if they certainly touch as FCL sees them: a witness of one lies inside the other, a
+// solid box, cylinder or sphere, by more than the margin: a corner (a mesh's triangle corner, a
+// box's corner) or a point of an edge (a mesh's triangle edge, a box's edge). FCL tests a mesh's
+// triangles and a box's solid against the solid primitive, so it finds that contact too. (Two
+// meshes are never proven touching: FCL sees only surfaces.)
 bool certainly_touching(const PlacedBound& a, const PlacedBound& b);
 
 }  // namespace demoplan
