@@ -16,18 +16,18 @@ namespace {
 cv::Vec3f bgr_of(const Eigen::Vector4d& rgba) { return {float(rgba[2] * 255), float(rgba[1] * 255), float(rgba[0] * 255)}; }
 }  // namespace
 
-RenderMesh geometry_render_mesh(const Geometry& g) {
+RenderMesh geometry_render_mesh(const Geometry& g, TextureUse texture) {
   if (const auto* b = std::get_if<BoxShape>(&g.shape)) return box_mesh(b->size, bgr_of(g.color));
   if (const auto* c = std::get_if<CylinderShape>(&g.shape)) return cylinder_mesh(c->radius, c->length, bgr_of(g.color));
-  if (const auto* m = std::get_if<MeshShape>(&g.shape); m && m->mesh) return render_mesh(*m->mesh, m->scale, Pose::Identity());
+  if (const auto* m = std::get_if<MeshShape>(&g.shape); m && m->mesh) return render_mesh(*m->mesh, m->scale, Pose::Identity(), texture);
   return {};
 }
 
-RenderMesh part_render_mesh(const RobotModel& model, const std::string& name) {
+RenderMesh part_render_mesh(const RobotModel& model, const std::string& name, TextureUse texture) {
   RenderMesh part;
   if (!model.links.empty())
     for (const auto& g : model.links.front().visuals) {
-      RenderMesh m = geometry_render_mesh(g);
+      RenderMesh m = geometry_render_mesh(g, texture);
       if (m.triangles.empty()) continue;
       if (part.triangles.empty()) {
         part = std::move(m);

@@ -17,10 +17,11 @@ namespace demoplan::perception {
 
 // Every visual of the model's root link merged into one mesh in the link's frame (the first
 // visual keeps its texture). Throws InputError naming `name` when it has no visual geometry.
-RenderMesh part_render_mesh(const RobotModel& model, const std::string& name);
+RenderMesh part_render_mesh(const RobotModel& model, const std::string& name,
+                            TextureUse texture = TextureUse::Load);
 
 // A visual geometry as a mesh in its own frame; empty for a shape it cannot draw.
-RenderMesh geometry_render_mesh(const Geometry& geometry);
+RenderMesh geometry_render_mesh(const Geometry& geometry, TextureUse texture = TextureUse::Load);
 
 // The meshes of the objects a marker scene lists, in its order, from the benchmark task or the
 // cell it names (`scene_file` resolves the cell's relative path). Throws InputError naming the

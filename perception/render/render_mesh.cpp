@@ -30,7 +30,7 @@ void RenderMesh::append(const RenderMesh& other, const Pose& transform) {
   uvs.clear();  // a merged mesh is drawn in one colour
 }
 
-RenderMesh render_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale, const Pose& origin) {
+RenderMesh render_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale, const Pose& origin, TextureUse texture) {
   RenderMesh out;
   const Eigen::Affine3f T = origin.cast<float>();
   const Eigen::Vector3f s = scale.cast<float>();
@@ -38,7 +38,7 @@ RenderMesh render_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale, c
   for (const auto& v : mesh.vertices) out.vertices.push_back(T * Eigen::Vector3f(v.cwiseProduct(s)));
   out.triangles = mesh.triangles;
   out.color = {mesh.color[2] * 255.f, mesh.color[1] * 255.f, mesh.color[0] * 255.f};
-  if (!mesh.texture_path.empty() && mesh.uvs.size() == mesh.vertices.size()) {
+  if (texture == TextureUse::Load && !mesh.texture_path.empty() && mesh.uvs.size() == mesh.vertices.size()) {
     out.texture = cv::imread(mesh.texture_path, cv::IMREAD_COLOR);
     if (out.texture.empty()) throw InputError(mesh.texture_path, "", "cannot read the texture image");
     out.uvs = mesh.uvs;

@@ -27,9 +27,14 @@ struct RenderMesh {
   void append(const RenderMesh& other, const Pose& transform);  // geometry only, colour kept
 };
 
+// Whether a mesh's texture image is read: Skip for coverage and depth only (outlines), where
+// decoding a 2048x2048 texture would cost more than drawing the mesh.
+enum class TextureUse { Load, Skip };
+
 // A loaded mesh with its URDF scale and origin applied; the texture is read from its file.
 // Throws InputError when the texture cannot be read.
-RenderMesh render_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale, const Pose& origin);
+RenderMesh render_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale, const Pose& origin,
+                       TextureUse texture = TextureUse::Load);
 
 // Primitives, centred on their frame: a box of `size`, a cylinder along z.
 RenderMesh box_mesh(const Eigen::Vector3d& size, const cv::Vec3f& bgr);

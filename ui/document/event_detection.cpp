@@ -55,22 +55,32 @@ bool EventDetection::start() {
   if (model_tracker_) {
     job.model_tracker = true;
     job.data_dir = doc_->dataDir();
-    const auto init_file = std::filesystem::path(job.markers).parent_path() / "init.json";
-    if (std::filesystem::is_regular_file(init_file)) {
-      job.init_source = init_file.string();
-      try {
-        job.init = perception::load_tracker_init(job.init_source);
-      } catch (const std::exception& e) {
-        emit done(ExtractionOutcome{false, e.what(), {}, {}, 0, 0.0});
-        return false;
-      }
-    } else {
-      job.init_source = "the parts' poses at frame 0";
-      const PoseList poses = doc_->demoPosesAt(0);
-      for (size_t k = 0; k < job.object_ids.size() && k < poses.size(); ++k) job.init.parts.push_back({job.object_ids[k], poses[k]});
+    try {
+      job.init = modelTrackerStart(&job.init_source);
+    } catch (const std::exception& e) {
+      emit done(ExtractionOutcome{false, e.what(), {}, {}, 0, 0.0});
+      return false;
     }
   }
   return runner_.start(std::move(job));
+}
+
+perception::TrackerInit EventDetection::modelTrackerStart(std::string* source) const {
+  perception::TrackerInit init;
+  std::string from;
+  const std::string& markers = doc_->media()->markersFile();
+  const auto init_file = std::filesystem::path(markers).parent_path() / "init.json";
+  if (!markers.empty() && std::filesystem::is_regular_file(init_file)) {
+    from = init_file.string();
+    init = perception::load_tracker_init(from);
+  } else if (doc_->hasProject()) {
+    from = kPosesAtFrameZero;
+    const PoseList poses = doc_->demoPosesAt(0);
+    const auto& objects = doc_->scene().objects;
+    for (size_t k = 0; k < objects.size() && k < poses.size(); ++k) init.parts.push_back({objects[k].id, poses[k]});
+  }
+  if (source) *source = from;
+  return init;
 }
 
 void EventDetection::onFinished(const ExtractionOutcome& o) {

@@ -5,6 +5,7 @@
 #include <QObject>
 #include <QString>
 
+#include "perception/tracking/tracker_init.h"
 #include "ui/document/extraction_runner.h"
 
 namespace demoplan::ui {
@@ -28,6 +29,12 @@ public:
   // no part in it carries a marker, else the markers.
   void setModelTracker(bool model);
   bool modelTracker() const { return model_tracker_; }
+  // Where the part models start as start() would give them to the tracker (the rule above), for
+  // the run and for the video panel's outlines; `source` names it. Throws InputError when
+  // init.json cannot be read.
+  perception::TrackerInit modelTrackerStart(std::string* source = nullptr) const;
+  // The source modelTrackerStart() names when the parts start where the project shows them.
+  static constexpr const char* kPosesAtFrameZero = "the parts' poses at frame 0";
 
 signals:
   void trackerChanged(bool model);

@@ -381,7 +381,8 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
   tracker_->addItem(tr("Part models (no markers)"));
   tracker_->setToolTip(tr("How the parts are followed through the video: by the markers stuck on them, or by their "
                           "3D models from where they stand in the first frame (init.json beside the marker scene, "
-                          "else the parts' poses at frame 0 in this project)"));
+                          "else the parts' poses at frame 0 in this project: at frame 0 the video shows their "
+                          "outlines; move a part in the 3D view until its outline lies on it)"));
   tracker_->setCurrentIndex(doc_->detection()->modelTracker() ? 1 : 0);
   connect(tracker_, &QComboBox::currentIndexChanged, this,
           [this](int index) { doc_->detection()->setModelTracker(index == 1); });

@@ -41,17 +41,25 @@ FrameView::FrameView(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc
     image_frame_ = -1;
     reloadFrame();
   });
-  connect(doc_->media(), &Media::cameraChanged, this, [this] {
-    detector_.reset();
-    computeOverlay();
-    update();
-  });
   auto overlay = [this] {
     computeOverlay();
     update();
   };
+  connect(doc_, &Document::sceneChanged, this, [this, overlay] {
+    rebuildModels();
+    overlay();
+  });
+  connect(doc_->media(), &Media::cameraChanged, this, [this, overlay] {
+    detector_.reset();
+    start_poses_.forgetOutlines();
+    overlay();
+  });
   connect(doc_, &Document::demonstrationChanged, this, overlay);
   connect(doc_, &Document::selectionChanged, this, overlay);
+  connect(doc_, &Document::displayChanged, this, overlay);
+  // Which tracker, and with the marker scene where init.json may lie, where the parts start.
+  connect(doc_->detection(), &EventDetection::trackerChanged, this, overlay);
+  connect(doc_->media(), &Media::markersChanged, this, overlay);
   rebuildModels();
   reloadFrame();
 }
@@ -72,6 +80,7 @@ void FrameView::setShowMarkers(bool on) {
 
 void FrameView::rebuildModels() {
   model_points_.clear();
+  start_poses_.forgetMeshes();
   if (!doc_->hasProject()) return;
   for (const SceneObject& o : doc_->scene().objects) {
     std::vector<Eigen::Vector3d> pts;
@@ -131,6 +140,8 @@ void FrameView::reloadFrame() {
 
 void FrameView::computeOverlay() {
   outlines_.assign(model_points_.size(), QPolygonF());
+  start_poses_.update(*doc_, show_outlines_ && !image_.isNull());
+  if (start_poses_.shown()) return;  // one outline a part: where it starts
   const perception::Camera* cam = doc_->media()->camera();
   if (!doc_->hasProject() || !cam || !cam->world_T_camera || !show_outlines_) return;
   const Pose camera_T_world = cam->world_T_camera->inverse();
@@ -187,17 +198,36 @@ void FrameView::paintEvent(QPaintEvent*) {
   p.scale(s, s);
   const Demonstration& d = doc_->demonstration();
   std::vector<QRectF> labels;  // placed so far, to keep names from overlapping
-  for (size_t o = 0; o < outlines_.size(); ++o) {
-    if (outlines_[o].isEmpty()) continue;
+  const bool start_poses = start_poses_.shown();
+  const size_t parts = start_poses ? start_poses_.outlines().size() : outlines_.size();
+  for (size_t o = 0; o < parts; ++o) {
     const bool selected = int(o) == doc_->selectedObject();
-    QColor c = selected ? kSelectionColor : objectColor(int(o)).lighter(130);
-    p.setPen(QPen(c, (selected ? 3.0 : 2.0) / s));
-    QColor fill = c;
-    fill.setAlphaF(selected ? 0.18f : 0.08f);
-    p.setBrush(fill);
-    p.drawPolygon(outlines_[o]);
+    QColor c;
+    QRectF br;
+    if (start_poses) {
+      // The silhouette's edge, unfilled so the part's own edge in the video shows beside it; a
+      // dark line under it keeps it visible on light and dark parts alike.
+      const auto& pieces = start_poses_.outlines()[o];
+      if (pieces.empty()) continue;
+      c = objectColor(int(o)).lighter(130);
+      const double width = selected ? 3.0 : 1.5;
+      p.setBrush(Qt::NoBrush);
+      p.setPen(QPen(QColor(0, 0, 0, 150), (width + 2.0) / s, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+      for (const QPolygonF& piece : pieces) p.drawPolyline(piece);
+      p.setPen(QPen(c, width / s, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+      for (const QPolygonF& piece : pieces) p.drawPolyline(piece);
+      br = start_poses_.bounds(int(o));
+    } else {
+      if (outlines_[o].isEmpty()) continue;
+      c = selected ? kSelectionColor : objectColor(int(o)).lighter(130);
+      p.setPen(QPen(c, (selected ? 3.0 : 2.0) / s));
+      QColor fill = c;
+      fill.setAlphaF(selected ? 0.18f : 0.08f);
+      p.setBrush(fill);
+      p.drawPolygon(outlines_[o]);
+      br = outlines_[o].boundingRect();
+    }
     if (o >= d.object_ids.size()) continue;
-    const QRectF br = outlines_[o].boundingRect();
     QFont f = font();
     f.setPointSizeF(f.pointSizeF() / s);
     f.setBold(true);
@@ -236,6 +266,19 @@ void FrameView::paintEvent(QPaintEvent*) {
     f.setBold(true);
     p.setFont(f);
     const QRectF box(target.left() + 8, target.top() + 8, p.fontMetrics().horizontalAdvance(text) + 16, p.fontMetrics().height() + 8);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0, 0, 0, 160));
+    p.drawRoundedRect(box, 4, 4);
+    p.setPen(Qt::white);
+    p.drawText(box, Qt::AlignCenter, text);
+  }
+  if (!start_poses_.caption().isEmpty()) {
+    QFont f = font();
+    f.setBold(true);
+    p.setFont(f);
+    const QString text = p.fontMetrics().elidedText(start_poses_.caption(), Qt::ElideMiddle, int(target.width()) - 32);
+    const QRectF box(target.left() + 8, target.bottom() - p.fontMetrics().height() - 16,
+                     p.fontMetrics().horizontalAdvance(text) + 16, p.fontMetrics().height() + 8);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 160));
     p.drawRoundedRect(box, 4, 4);
@@ -284,7 +327,7 @@ VideoPanel::VideoPanel(Document* doc, Transport* transport, QWidget* parent)
   bar->addWidget(position_);
   auto* outlines = new QCheckBox(tr("Outlines"), this);
   outlines->setChecked(true);
-  outlines->setToolTip(tr("Draw each part's model at its demonstrated pose through the calibrated camera"));
+  outlines->setToolTip(tr("Draw each part's model at its demonstrated pose through the calibrated camera; on the start frame of the part-model tracker, its silhouette where the tracker starts it"));
   connect(outlines, &QCheckBox::toggled, view_, &FrameView::setShowOutlines);
   bar->addWidget(outlines);
   auto* markers = new QCheckBox(tr("Markers"), this);

@@ -1,7 +1,9 @@
 #pragma once
 // The video panel: the current frame of the recording with the parts' outlines at their
 // demonstrated poses (their meshes projected through the calibrated camera, so a wrong pose is
-// visible at a glance) and, on request, the ArUco markers found in the frame; a transport bar
+// visible at a glance; on the start frame of the part-model tracker, their silhouette edges at
+// the poses it starts from: start_pose_outlines.h) and, on request, the ArUco markers found in
+// the frame; a transport bar
 // (play/pause, step, slider, frame and time). Drop a video file on it to open it.
 #include <QImage>
 #include <QWidget>
@@ -9,6 +11,7 @@
 #include <vector>
 
 #include "ui/document/document.h"
+#include "ui/widgets/start_pose_outlines.h"
 #include "ui/widgets/transport.h"
 
 class QCheckBox;
@@ -35,6 +38,8 @@ public:
   const QImage& image() const { return image_; }
   // The outline of each part in image pixels (empty when it cannot be drawn).
   const std::vector<QPolygonF>& outlines() const { return outlines_; }
+  // The outlines at the part-model tracker's start poses (drawn in place of those above).
+  const StartPoseOutlines& startPoses() const { return start_poses_; }
   QSize sizeHint() const override { return {480, 270}; }
 
 protected:
@@ -52,6 +57,7 @@ private:
   bool show_outlines_ = true, show_markers_ = false;
   std::vector<std::vector<Eigen::Vector3d>> model_points_;  // per object, object frame
   std::vector<QPolygonF> outlines_;
+  StartPoseOutlines start_poses_;
   struct Marker {
     int id;
     QPolygonF corners;
