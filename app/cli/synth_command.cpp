@@ -41,9 +41,11 @@ int run_cell_synth(const SynthCliOptions& o) {
             << "  init         " << r.init << "\n"
             << "  calibration  " << r.calibration_video << ", " << r.board << ", " << r.camera_truth << "\n";
   if (!r.failure.empty()) std::cerr << "  fewer picks than asked: " << r.failure << "\n";
+  if (r.redraws > 0)
+    std::cerr << "  picks drawn " << r.redraws + 1 << " times: a part would have rested where no camera view shows it\n";
   std::cerr << "  time         " << r.render_seconds << " s\n";
   if (o.json)
-    std::cout << nlohmann::json{{"cell", o.cell},          {"picks", r.picks},        {"failure", r.failure},
+    std::cout << nlohmann::json{{"cell", o.cell},          {"picks", r.picks},        {"failure", r.failure}, {"redraws", r.redraws},
                                 {"frames", r.frames},      {"fps", r.fps},            {"events", r.events},
                                 {"video", r.video},        {"camera", r.camera},      {"scene", r.scene},
                                 {"truth", r.truth},        {"init", r.init},          {"calibration_video", r.calibration_video},

@@ -15,7 +15,8 @@ bool segment_hits_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const 
 }
 
 Camera place_camera(const DemoScript& s, const std::vector<Eigen::AlignedBox3d>& obstacles,
-                    const std::vector<std::vector<ObjectMarker>>& markers, const CameraPlacementOptions& o) {
+                    const std::vector<std::vector<ObjectMarker>>& markers, const CameraPlacementOptions& o,
+                    CameraPlacementReport* report) {
   // The points to keep in view: every part's box corners along the video (every 3rd frame).
   std::vector<Eigen::Vector3d> points, rest_centres;
   for (int f = 0; f < s.frames; f += 3)
@@ -64,6 +65,8 @@ Camera place_camera(const DemoScript& s, const std::vector<Eigen::AlignedBox3d>&
   best.cx = (o.image_size.width - 1) / 2.0;
   best.cy = (o.image_size.height - 1) / 2.0;
   double best_score = std::numeric_limits<double>::infinity();
+  // Until a view fits: nothing seen.
+  if (report) *report = {markers.empty() ? 0 : static_cast<int>(rests.size()), static_cast<int>(rest_centres.size())};
   for (int a = 0; a < o.azimuths * static_cast<int>(o.elevations.size()); ++a) {
     const double az = 2 * M_PI * (a % o.azimuths) / o.azimuths;
     const double el = o.elevations[a / o.azimuths];
@@ -117,6 +120,7 @@ Camera place_camera(const DemoScript& s, const std::vector<Eigen::AlignedBox3d>&
     if (score < best_score) {
       best_score = score;
       best.world_T_camera = look_at(eye, target);
+      if (report) *report = {blind, hidden};
     }
   }
   if (!best.world_T_camera) best.world_T_camera = look_at(target + 4.0 * Eigen::Vector3d(0, -0.7, 0.7), target);

@@ -24,11 +24,17 @@ struct CameraPlacementOptions {
 // Whether the segment from a to b (its last 5 cm excluded) crosses the box.
 bool segment_hits_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::AlignedBox3d& box);
 
+// How well the chosen view sees the parts at rest.
+struct CameraPlacementReport {
+  int blind_rests = 0;    // a part at one of its rests showing none of its markers
+  int hidden_points = 0;  // of the rests' centres and pulled-in corners, behind furniture
+};
+
 // `obstacles`: world boxes of furniture that may hide parts (not the floor). `markers`: per part
 // (optional), the markers on it; a view where a resting part shows none of them (facing the
 // camera within 70 degrees and not hidden) is avoided above all.
 Camera place_camera(const DemoScript& script, const std::vector<Eigen::AlignedBox3d>& obstacles,
                     const std::vector<std::vector<ObjectMarker>>& markers = {},
-                    const CameraPlacementOptions& options = {});
+                    const CameraPlacementOptions& options = {}, CameraPlacementReport* report = nullptr);
 
 }  // namespace demoplan::perception

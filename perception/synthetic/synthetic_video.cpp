@@ -385,39 +385,50 @@ CellSynthOutput write_synthetic_cell_demonstration(const CellSynthOptions& o, co
   const Scene scene = build_cell_scene(cell, scene_options);
   const SceneState start = cell_start_state(cell, scene);
   CellSynthOutput out;
-  std::vector<ScriptedPick> picks;
-  if (!o.script.empty()) {
-    picks = load_pick_script(o.script, scene);
-  } else {
-    if (o.picks < 1) throw InputError("synth options", "picks", "must be >= 1");
-    const RandomPickReport r = random_picks(scene, start, o.picks, ro.seed);
-    picks = r.picks;
-    out.failure = r.failure;
-  }
-  if (picks.empty()) throw InputError(o.cell, "parts", "no pick to demonstrate: " + out.failure);
-  out.picks = static_cast<int>(picks.size());
-  PickTiming timing;
-  auto scaled = [&](int frames) { return std::max(4, static_cast<int>(std::lround(frames * ro.time_scale))); };
-  timing.lead_in = scaled(timing.lead_in);
-  timing.carry = scaled(timing.carry);
-  timing.between = scaled(timing.between);
-  const Demonstration truth = demonstration_from_picks(scene, start, picks, scene.name, timing);
-
+  if (o.script.empty() && o.picks < 1) throw InputError("synth options", "picks", "must be >= 1");
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   if (!fs::is_directory(out_dir)) throw InputError(out_dir, "", "cannot create the output folder");
   const Assets assets = scene_assets(scene);
   std::vector<Eigen::AlignedBox3d> bounds;
   for (const auto& p : assets.parts) bounds.push_back(p.bounds().cast<double>());
-  // Two seconds after the last release, as a recording that stops once the demonstrator is done:
-  // the hand pulls away (26 frames) and the parts are seen at rest.
-  DemoScript script = make_demo_script(truth, start.objects, bounds, scaled(60));
-
   MarkerIds ids;
   std::vector<MarkedObject> marked = cell_part_markers(cell, object_ids(scene), bounds, &ids);
   std::vector<std::vector<ObjectMarker>> part_markers;
   for (const auto& o : marked) part_markers.push_back(o.markers);
-  Camera camera = place_camera(script, assets.obstacles, part_markers);
+  PickTiming timing;
+  auto scaled = [&](int frames) { return std::max(4, static_cast<int>(std::lround(frames * ro.time_scale))); };
+  timing.lead_in = scaled(timing.lead_in);
+  timing.carry = scaled(timing.carry);
+  timing.between = scaled(timing.between);
+
+  // Random picks whose part would rest where no camera view shows one of its markers (inside a
+  // shelf behind its side board) are drawn again: a monocular demonstration cannot show them.
+  // The redraws follow from the seed, so a seed still gives one video.
+  constexpr int kDraws = 10;
+  std::vector<ScriptedPick> picks;
+  Demonstration truth;
+  DemoScript script;
+  Camera camera;
+  for (int draw = 0; draw < (o.script.empty() ? kDraws : 1); ++draw) {
+    if (!o.script.empty()) {
+      picks = load_pick_script(o.script, scene);
+    } else {
+      const RandomPickReport r = random_picks(scene, start, o.picks, ro.seed + static_cast<std::uint64_t>(draw) * 1000003);
+      picks = r.picks;
+      out.failure = r.failure;
+    }
+    if (picks.empty()) throw InputError(o.cell, "parts", "no pick to demonstrate: " + out.failure);
+    truth = demonstration_from_picks(scene, start, picks, scene.name, timing);
+    // Two seconds after the last release, as a recording that stops once the demonstrator is
+    // done: the hand pulls away (26 frames) and the parts are seen at rest.
+    script = make_demo_script(truth, start.objects, bounds, scaled(60));
+    CameraPlacementReport seen;
+    camera = place_camera(script, assets.obstacles, part_markers, {}, &seen);
+    out.redraws = draw;
+    if (seen.blind_rests == 0) break;
+  }
+  out.picks = static_cast<int>(picks.size());
   if (!ro.part_markers)
     for (auto& m : marked) m.markers.clear();
   add_hand(script, camera.world_T_camera->translation());

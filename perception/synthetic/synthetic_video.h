@@ -64,6 +64,7 @@ struct CellSynthOutput : SynthOutput {
   std::string calibration_video, board, camera_truth;
   int picks = 0;
   std::string failure;  // fewer random picks than asked: why (the video shows those found)
+  int redraws = 0;      // random picks drawn again because a part would rest where no view shows it
 };
 
 // Throws InputError for a bad cell or pick script.
