@@ -19,13 +19,6 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-const PlacementRun* best_run(const std::vector<PlacementRun>& runs) {
-  const PlacementRun* best = nullptr;
-  for (const PlacementRun& r : runs)
-    if (r.valid && (!best || r.cycle_time_s < best->cycle_time_s)) best = &r;
-  return best;
-}
-
 PlacementRun plan_once(const PlanningProblem& problem, const PlacementSettings& settings, std::uint64_t seed,
                        const std::atomic<bool>* cancel) {
   PlannerSettings s = settings.planner;
@@ -61,31 +54,6 @@ PlacementRun plan_once(const PlanningProblem& problem, const PlacementSettings& 
 }
 
 }  // namespace
-
-double PlacementCandidate::success_rate() const {
-  if (runs.empty()) return 0;
-  return static_cast<double>(std::count_if(runs.begin(), runs.end(), [](const auto& r) { return r.valid; })) /
-         static_cast<double>(runs.size());
-}
-
-double PlacementCandidate::median_time_s() const {
-  if (runs.empty()) return 0;
-  std::vector<double> t;
-  for (const auto& r : runs) t.push_back(r.planning_time_s);
-  std::sort(t.begin(), t.end());
-  const size_t n = t.size();
-  return n % 2 ? t[n / 2] : (t[n / 2 - 1] + t[n / 2]) / 2;
-}
-
-std::optional<double> PlacementCandidate::cycle_time_s() const {
-  const PlacementRun* best = best_run(runs);
-  return best ? std::optional<double>(best->cycle_time_s) : std::nullopt;
-}
-
-std::optional<double> PlacementCandidate::path_length() const {
-  const PlacementRun* best = best_run(runs);
-  return best ? std::optional<double>(best->path_length) : std::nullopt;
-}
 
 std::string screen_candidate(const PlanningProblem& problem, int samples) {
   const Scene& scene = *problem.scene;
@@ -130,22 +98,6 @@ PlacementCandidate evaluate_candidate(const ProblemAtBase& problem_at, int index
     c.runs.push_back(plan_once(problem, settings, seed, cancel));
   }
   return c;
-}
-
-bool ranks_before(const PlacementCandidate& a, const PlacementCandidate& b) {
-  constexpr double kNone = 1e300;
-  // A base that does not fit is never better, whatever the planner (which does not check the
-  // base against the furniture, as the benchmark does not) made of it with --plan-rejected.
-  if (a.feasible != b.feasible) return a.feasible;
-  const double sa = a.success_rate(), sb = b.success_rate();
-  if (sa != sb) return sa > sb;
-  const double ca = a.cycle_time_s().value_or(kNone), cb = b.cycle_time_s().value_or(kNone);
-  if (ca != cb) return ca < cb;
-  return a.index < b.index;
-}
-
-void rank_candidates(std::vector<PlacementCandidate>& candidates) {
-  std::sort(candidates.begin(), candidates.end(), ranks_before);
 }
 
 }  // namespace demoplan

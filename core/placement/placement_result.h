@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/placement/base_placement.h"
+#include "core/placement/placement_candidate.h"
 #include "core/placement/furniture_footprints.h"
 
 namespace demoplan {

@@ -21,6 +21,7 @@
 #include "core/model/robot_model.h"
 #include "core/model/srdf.h"
 #include "core/path/path.h"
+#include "core/placement/placement_result.h"
 #include "core/cell/cell.h"
 #include "core/project/project.h"
 #include "perception/camera/camera_model.h"
@@ -121,6 +122,12 @@ TEST_F(FuzzRegressions, Path) {
             0u);
 }
 
+TEST_F(FuzzRegressions, Placement) {
+  EXPECT_GT(expect_each_input_loads_or_fails_cleanly("placement", scratch.dir / "input.json",
+                                                     [](const std::string& f) { load_placement_result(f); }),
+            0u);
+}
+
 TEST_F(FuzzRegressions, Urdf) {
   // As the fuzz target: the text parsed as if it were beside the Panda's meshes.
   const std::string as = kSource.string() + "/resources/gtamp/robots/franka_panda/fuzz.urdf";
@@ -207,7 +214,7 @@ TEST_F(FuzzRegressions, TrackerInit) {
 
 // Every fuzz target has a test above: a new tests/fuzz/fuzz_<target>.cpp needs one here too.
 TEST(FuzzRegressionsCoverage, EveryFuzzTargetIsReplayed) {
-  const std::vector<std::string> replayed{"project", "cell", "demonstration", "path",         "urdf",    "srdf",
+  const std::vector<std::string> replayed{"project", "cell", "demonstration", "path", "placement", "urdf", "srdf",
                                           "task",    "camera",        "camera_yaml",  "camera_xml", "marker_scene",
                                           "bop_csv", "hand_detections", "tracks", "charuco_board", "tracker_init"};
   for (const auto& e : fs::directory_iterator(kSource / "tests/fuzz")) {
