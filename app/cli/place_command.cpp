@@ -82,7 +82,6 @@ int run_place(PlaceOptions o) {
   result.arguments.update({{"region", to_string(region)}, {"default_z", z}, {"samples", o.samples},
                            {"seeds", o.placement.seeds}, {"planner", o.settings.planner_name},
                            {"time_limit_s", o.settings.planner.time_limit},
-                           {"shortcut_time_s", o.settings.shortcutting.time_limit},
                            {"screen_samples", o.placement.screen_samples},
                            {"plan_rejected", o.placement.plan_rejected}, {"published", o.published}});
   const std::vector<BasePose> candidates = candidate_base_poses(region, o.samples, z);
@@ -128,9 +127,6 @@ int run_place(PlaceOptions o) {
 Command register_place_command(CLI::App& app) {
   auto opts = std::make_shared<PlaceOptions>();
   opts->settings.planner.time_limit = 10;
-  // Ended by its failure count, not by the clock, so a candidate's cycle time is the same on a
-  // loaded machine, in a shard and alone.
-  opts->settings.shortcutting.time_limit = 10;
   CLI::App* sub = app.add_subcommand(
       "place", "search the robot's base pose for a task: screen, plan and time candidates over a region, ranked");
   add_task_inputs(*sub, opts->inputs);
@@ -143,8 +139,6 @@ Command register_place_command(CLI::App& app) {
   sub->add_option("--seeds", opts->seeds, "planning seeds per candidate, e.g. 1-3")->capture_default_str();
   add_planner_options(*sub, opts->settings);
   sub->remove_option(sub->get_option("--seed"));  // --seeds
-  sub->add_option("--shortcut-time", opts->settings.shortcutting.time_limit,
-                  "at most this long shortening each path (s)")->capture_default_str();
   sub->add_option("--screen-samples", opts->placement.screen_samples,
                   "samples per grasp or release in the screen")->check(CLI::PositiveNumber)->capture_default_str();
   sub->add_flag("--plan-rejected", opts->placement.plan_rejected,

@@ -15,6 +15,8 @@ namespace demoplan {
 
 namespace {
 
+constexpr double kNoClockLimit = 24 * 3600.0;  // s: longer than any candidate's shortcut
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -24,6 +26,11 @@ PlacementRun plan_once(const PlanningProblem& problem, const PlacementSettings& 
   PlannerSettings s = settings.planner;
   s.planner.seed = seed;
   s.shortcut = true;
+  // A candidate's cycle time must be the same loaded, in a shard and alone: the shortcut ends by
+  // its failure count and the put-back detours by their rounds, never by the clock (a long
+  // shelf_1 path shortens for 6.7 s idle, and three busy loops on 2 cores cut it at 10 s).
+  s.shortcutting.time_limit = kNoClockLimit;
+  s.shortcutting.detour_time = kNoClockLimit;
   const PlanReport report = run_plan_job(problem, s, {}, cancel, {.assess_on_failure = false,
                                                                   .validate_planner_path = false});
   PlacementRun run;

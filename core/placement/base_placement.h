@@ -19,7 +19,9 @@
 namespace demoplan {
 
 struct PlacementSettings {
-  PlannerSettings planner;  // seed and time limit per run; shortcutting on
+  // Seed and time limit per run; shortcutting on, ended by its counts (failures, attempts,
+  // detour rounds), never by the clock: its time limits are ignored.
+  PlannerSettings planner;
   std::vector<std::uint64_t> seeds = {1, 2, 3};
   int screen_samples = 30;  // per transition
   // Plan candidates the screen rejected too (to measure how many of them planning would solve).

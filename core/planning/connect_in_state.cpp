@@ -57,7 +57,7 @@ std::optional<std::vector<Eigen::VectorXd>> connect_in_state(const ConstraintPro
   };
   Tree* grow = &ta;
   Tree* other = &tb;
-  while (std::chrono::steady_clock::now() < params.deadline) {
+  for (long round = 0; round < params.max_rounds && std::chrono::steady_clock::now() < params.deadline; ++round) {
     int from = -1, to = -1;
     if (extend(*grow, sampler.sample_configuration(state, rng), &from) == Extend::Trapped) {
       std::swap(grow, other);

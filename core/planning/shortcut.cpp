@@ -33,9 +33,9 @@ Waypoint waypoint_at(const Scene& scene, const ConstraintGraph& g, const Path& p
 // back where it was, where the planner linked two trees of that state through a grasp state.
 // That grasp does nothing for the task but is counted (the benchmark's number of grasps) and
 // done by the robot. Joins the first waypoint before such a detour to the first one after it
-// within the state (RRT-Connect), for at most `seconds` each.
+// within the state (RRT-Connect), for at most `seconds` and `rounds` each.
 int remove_detours(const Scene& scene, const ConstraintGraph& graph, const StateValidity& validity,
-                   CollisionData& data, Path& path, std::mt19937_64& rng, double seconds) {
+                   CollisionData& data, Path& path, std::mt19937_64& rng, double seconds, long rounds) {
   std::unique_ptr<ConstraintProjector> sampler;  // built at the first detour: most paths have none
   int removed = 0;
   auto& w = path.waypoints;
@@ -56,6 +56,7 @@ int remove_detours(const Scene& scene, const ConstraintGraph& graph, const State
     ConnectParams cp;
     cp.deadline = std::chrono::steady_clock::now() +
                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+    cp.max_rounds = rounds;
     const auto via = connect_in_state(*sampler, validity, data, s, w[i].q, w[j].q, rng, cp);
     if (!via) {  // try the next detour, not this one again from the next waypoint
       while (i + 1 < w.size() && w[i + 1].state == s) ++i;
@@ -90,7 +91,8 @@ ShortcutResult shortcut_path(const Scene& scene, const ConstraintGraph& graph, c
   CollisionData data = checker.make_data();
   std::mt19937_64 rng(params.seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
-  if (params.detour_time > 0) r.detours_removed = remove_detours(scene, graph, validity, data, path, rng, params.detour_time);
+  if (params.detour_time > 0) r.detours_removed = remove_detours(scene, graph, validity, data, path, rng, params.detour_time,
+                                                            params.detour_rounds);
   const auto t1 = Clock::now();  // the shortcut budget starts after the detours
   long failures = 0;  // attempts since the last accepted cut
   while (r.attempts < params.max_attempts && failures < params.max_failures &&

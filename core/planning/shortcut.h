@@ -22,8 +22,10 @@ struct ShortcutParams {
   std::uint64_t seed = 1;
   // Beyond the paper: before shortcutting, a detour that grasps a part and puts it back
   // unmoved is replaced by a link within the placement state (RRT-Connect), trying for up to
-  // this long (s) per detour; time_limit then applies to the shortcuts.
+  // this long (s) and at most detour_rounds rounds of RRT-Connect per detour; time_limit then
+  // applies to the shortcuts.
   double detour_time = 1.0;
+  long detour_rounds = 1000;
 };
 
 struct ShortcutResult {

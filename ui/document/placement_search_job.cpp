@@ -63,7 +63,6 @@ bool PlacementSearchJob::start(QString* error) {
   PlacementSettings placement;
   placement.planner = doc_->planning()->settings();
   placement.planner.planner.time_limit = s.time_limit_s;
-  placement.planner.shortcutting.time_limit = 10;  // ended by its failure count: the CLI's cycle times
   placement.seeds.clear();
   for (int seed = 1; seed <= s.seeds; ++seed) placement.seeds.push_back(static_cast<std::uint64_t>(seed));
   candidates_.clear();
