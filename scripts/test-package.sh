@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The package test (ctest: package_installs_and_runs): builds the .deb with CPack, unpacks it
 # into a temporary root, and runs the unpacked programs from there, far from the source tree:
-# `check` must load the unpacked benchmark data, `plan` must solve shelf_0, the GUI must open
-# the unpacked sample; lintian must report no error (accepted warnings: packaging/README.md).
+# `check` must load the unpacked benchmark data, `plan` must solve shelf_0, `board` must run (in
+# the private demoplan-cli-video), the GUI must open the unpacked sample; lintian must report no
+# error (accepted warnings: packaging/README.md).
 set -euo pipefail
 build="$(cd "${1:?usage: test-package.sh BUILD_DIR}" && pwd)"
 root="$(mktemp -d)"
@@ -22,6 +23,12 @@ echo "$out" | grep -q "($root/fs/usr/share/demoplan/gtamp)" || { echo "FAIL: che
   cat "$root/plan.log" >&2; echo "FAIL: the unpacked plan failed" >&2; exit 1; }
 grep -q "validator (benchmark subgoals): valid" "$root/plan.log" || { cat "$root/plan.log" >&2; exit 1; }
 grep "validator" "$root/plan.log"
+
+# A video command runs in the private demoplan-cli-video, found from the unpacked demoplan-cli.
+"$cli" board --out "$root/board.json" --image "$root/board.png" 2>"$root/board.log" || {
+  cat "$root/board.log" >&2; echo "FAIL: the unpacked board command failed" >&2; exit 1; }
+[ -s "$root/board.png" ] || { echo "FAIL: board wrote no page" >&2; exit 1; }
+echo "board ran in $(cd "$root/fs" && ls usr/lib/demoplan/demoplan-cli-video)"
 
 if [ -n "${DISPLAY:-}" ] && [ -x "$root/fs/usr/bin/demoplan" ]; then
   "$root/fs/usr/bin/demoplan" --sample --screenshot "$root/shot.png" --screenshot-delay 500 >"$root/gui.log" 2>&1 || {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/video_commands.h"
 #include "core/error.h"
 #include "perception/camera/charuco_board.h"
 
@@ -89,7 +90,7 @@ int run_board(const BoardCliOptions& o) {
 
 Command register_board_command(CLI::App& app) {
   auto o = std::make_shared<BoardCliOptions>();
-  CLI::App* sub = app.add_subcommand("board", "make a ChArUco calibration board: its file and a page to print");
+  CLI::App* sub = add_video_subcommand(app, "board");
   sub->add_option("--squares", o->squares, "squares as COLUMNSxROWS; ROWS must be odd")->capture_default_str();
   sub->add_option("--square-mm", o->square_mm, "side of a square, mm")->capture_default_str();
   sub->add_option("--marker-mm", o->marker_mm, "side of a marker, mm (smaller than a square)")->capture_default_str();

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/video_commands.h"
 #include "perception/camera/charuco_calibration.h"
 
 namespace demoplan::cli {
@@ -78,7 +79,7 @@ int run_calibrate(CalibrateCliOptions o) {
 
 Command register_calibrate_command(CLI::App& app) {
   auto o = std::make_shared<CalibrateCliOptions>();
-  CLI::App* sub = app.add_subcommand("calibrate", "camera intrinsics from a video or a folder of images of a ChArUco board");
+  CLI::App* sub = add_video_subcommand(app, "calibrate");
   sub->add_option("source", o->source, "video (mp4, avi, mkv) or folder of images")->required();
   sub->add_option("--board", o->board, "the board (demoplan-charuco-board JSON, as `board` writes it)")->required();
   sub->add_option("--out", o->out, "camera file to write (demoplan-camera JSON)")->required();

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace demoplan {
 struct PlannerSettings;
@@ -41,6 +42,10 @@ Command register_calibrate_command(CLI::App& app);
 Command register_synth_board_command(CLI::App& app);
 Command register_place_command(CLI::App& app);
 Command register_merge_command(CLI::App& app);
+
+// Parses the command line and runs the subcommand chosen, with the contract's exit codes and
+// one-line errors (demoplan-cli and demoplan-cli-video alike).
+int run_command_line(CLI::App& app, const std::vector<Command>& commands, int argc, char** argv);
 
 // --planner, --seed, --time-limit and the planner's tuning options (plan, place).
 void add_planner_options(CLI::App& sub, PlannerSettings& settings);

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/video_commands.h"
 #include "core/demo/demonstration.h"
 #include "core/error.h"
 #include "perception/camera/camera_model.h"
@@ -122,7 +123,7 @@ int run_extract(const ExtractCliOptions& o) {
 
 Command register_extract_command(CLI::App& app) {
   auto o = std::make_shared<ExtractCliOptions>();
-  CLI::App* sub = app.add_subcommand("extract", "extract grasp/release events and part poses from a demonstration video");
+  CLI::App* sub = add_video_subcommand(app, "extract");
   sub->add_option("video", o->video, "the video (mp4, avi, mkv)")->required();
   sub->add_option("--scene", o->scene, "marker scene (demoplan-marker-scene JSON)")->required()->check(CLI::ExistingFile);
   sub->add_option("--camera", o->camera, "camera (demoplan-camera JSON or OpenCV YAML); default: the scene's")

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/video_commands.h"
 #include "core/error.h"
 #include "core/project/project_scene.h"
 #include "perception/camera/camera_model.h"
@@ -55,7 +56,7 @@ int run_inspect(const InspectOptions& o) {
 Command register_inspect_command(CLI::App& app) {
   auto o = std::make_shared<InspectOptions>();
   CLI::App* sub =
-      app.add_subcommand("inspect", "read a project file and the files it names, as the desktop application opens it");
+      add_video_subcommand(app, "inspect");
   sub->add_option("project", o->project, "project file (.demoplan)")->required();
   add_data_dir_option(*sub, o->data_dir);
   sub->add_flag("--json", o->json, "print one JSON object on stdout");

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/video_commands.h"
 #include "core/error.h"
 #include "perception/printing/marker_sheet.h"
 #include "perception/printing/printed_page.h"
@@ -81,7 +82,7 @@ int run_markers(const MarkersOptions& o) {
 
 Command register_markers_command(CLI::App& app) {
   auto o = std::make_shared<MarkersOptions>();
-  CLI::App* sub = app.add_subcommand("markers", "print the parts' markers at true scale");
+  CLI::App* sub = add_video_subcommand(app, "markers");
   sub->add_option("scene", o->scene, "marker scene (demoplan-marker-scene JSON, as extract reads it)");
   sub->add_option("--cell", o->cell, "a cell: its parts' own markers, else one on each face of each part's box");
   sub->add_option("--out", o->out, "page to write (PNG; more pages as NAME-1.png, NAME-2.png, ...)")->required();

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/video_commands.h"
 #include "core/error.h"
 #include "core/project/new_project.h"
 #include "perception/camera/camera_model.h"
@@ -78,7 +79,7 @@ int run_new(const NewOptions& o) {
 
 Command register_new_command(CLI::App& app) {
   auto o = std::make_shared<NewOptions>();
-  CLI::App* sub = app.add_subcommand("new", "create a project file from a benchmark task or a cell");
+  CLI::App* sub = add_video_subcommand(app, "new");
   auto* spec = sub->add_option("scene", o->spec, "TASK:ROBOT:POSE, e.g. shelf_1:panda:1");
   sub->add_option("--cell", o->cell, "a cell file (docs/cell.md) in place of TASK:ROBOT:POSE")->excludes(spec);
   sub->add_option("--demo", o->demo, "with --cell: the demonstration to start from (default: none yet)")

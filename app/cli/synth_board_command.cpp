@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/video_commands.h"
 #include "perception/synthetic/board_video.h"
 
 namespace demoplan::cli {
@@ -42,8 +43,7 @@ int run_synth_board(const SynthBoardCliOptions& o) {
 
 Command register_synth_board_command(CLI::App& app) {
   auto o = std::make_shared<SynthBoardCliOptions>();
-  CLI::App* sub = app.add_subcommand(
-      "synth-board", "render a synthetic calibration video of a ChArUco board, with the true camera");
+  CLI::App* sub = add_video_subcommand(app, "synth-board");
   sub->add_option("--out", o->out, "output folder (calibration.mp4, board.json, camera_truth.json)")->required();
   sub->add_option("--views", o->video.views, "board poses, one frame each")->check(CLI::Range(1, 1000))->capture_default_str();
   sub->add_option("--noise", o->video.noise_sigma, "Gaussian image noise, grey levels")

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/video_commands.h"
 #include "perception/synthetic/synthetic_video.h"
 
 namespace demoplan::cli {
@@ -86,7 +87,7 @@ int run_synth(SynthCliOptions o) {
 
 Command register_synth_command(CLI::App& app) {
   auto o = std::make_shared<SynthCliOptions>();
-  CLI::App* sub = app.add_subcommand("synth", "render a synthetic demonstration video of a benchmark task or a cell, with ground truth");
+  CLI::App* sub = add_video_subcommand(app, "synth");
   auto* task = sub->add_option("--task", o->synth.task, "task as <task>_<demo>, e.g. shelf_1")->capture_default_str();
   auto* cell = sub->add_option("--cell", o->cell, "a cell file (docs/cell.md) in place of a benchmark task")->excludes(task);
   sub->add_option("--picks", o->picks, "with --cell: random doable picks to demonstrate")
