@@ -11,7 +11,10 @@
 #include <random>
 
 #include "core/demo/benchmark_scene.h"
+#include "core/scene/bounding_spheres.h"
 #include "core/scene/collision_checker.h"
+
+#include <fcl/fcl.h>
 
 using namespace demoplan;
 
@@ -131,6 +134,44 @@ void build_checker(benchmark::State& st) {
   for (auto _ : st) CollisionChecker c(f.scene);
 }
 
+// Fitting every mesh of a scene once on one thread, as a process's first checker does
+// (bvh_cache.h; the checker spreads the meshes over the cores): the bounding spheres alone
+// (ours), then FCL's OBBRSS BVHs alone.
+struct ScaledMesh {
+  std::vector<Eigen::Vector3d> vertices;
+  const TriangleMesh* mesh;
+};
+std::vector<ScaledMesh> scene_meshes(const Scene& scene) {
+  std::vector<ScaledMesh> out;
+  for (const auto& [mesh, scale] : collision_meshes(scene)) {
+    ScaledMesh s{{}, mesh};
+    for (const auto& v : mesh->vertices) s.vertices.push_back(v.cast<double>().cwiseProduct(scale));
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+void fit_spheres(benchmark::State& st, const std::string& task, const std::string& robot) {
+  const std::vector<ScaledMesh> meshes = scene_meshes(fixture(task, robot).scene);
+  for (auto _ : st)
+    for (const auto& m : meshes) benchmark::DoNotOptimize(fit_bounding_spheres(m.vertices, m.mesh->triangles));
+  st.counters["meshes"] = static_cast<double>(meshes.size());
+}
+
+void fit_fcl_bvhs(benchmark::State& st, const std::string& task, const std::string& robot) {
+  const std::vector<ScaledMesh> meshes = scene_meshes(fixture(task, robot).scene);
+  for (auto _ : st)
+    for (const auto& m : meshes) {
+      fcl::BVHModel<fcl::OBBRSSd> bvh;
+      std::vector<fcl::Triangle> triangles;
+      for (const auto& t : m.mesh->triangles) triangles.emplace_back(t[0], t[1], t[2]);
+      bvh.beginModel(static_cast<int>(triangles.size()), static_cast<int>(m.vertices.size()));
+      bvh.addSubModel(m.vertices, triangles);
+      bvh.endModel();
+      benchmark::DoNotOptimize(bvh.getNumBVs());
+    }
+}
+
 }  // namespace
 
 // Each scene with the fast path, then with FCL alone, on the same 4096 configurations.
@@ -146,6 +187,8 @@ BENCHMARK_CAPTURE(first_pass, panda_shelf_2_fast_path, std::string("shelf_2"), s
     ->Iterations(5)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(first_pass, panda_shelf_2_fcl_alone, std::string("shelf_2"), std::string("panda"), false)
     ->Iterations(5)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(fit_spheres, ur5_shelf_2, std::string("shelf_2"), std::string("ur5"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(fit_fcl_bvhs, ur5_shelf_2, std::string("shelf_2"), std::string("ur5"))->Unit(benchmark::kMillisecond);
 BENCHMARK(distance_query)->Unit(benchmark::kMicrosecond);
 BENCHMARK(build_checker)->Unit(benchmark::kMillisecond);
 

@@ -1,5 +1,6 @@
 // demoplan-cli plan: the plan job (core/planning/plan_job.h) on a benchmark task: the chosen
 // planner, shortcutting, the independent validator, and after a failure the reason.
+#include <chrono>
 #include <iostream>
 #include <memory>
 
@@ -24,7 +25,10 @@ struct PlanOptions {
 };
 
 int run_plan(const PlanOptions& o) {
+  const auto began = std::chrono::steady_clock::now();
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count(); };
   const LoadedTask t = load_task_inputs(o.inputs);
+  const double load_time_s = seconds();  // the scene, its meshes, the demonstration, the checker
   // Cleaned demonstrations are judged against the benchmark's own start and goal; a plan from
   // the raw video estimates against the start and goal those estimates give.
   const PlanningProblem& problem = t.instance.problem;
@@ -39,7 +43,8 @@ int run_plan(const PlanOptions& o) {
                    {"seed", seed},            {"solved", r.solved},
                    {"planning_time_s", r.planning_time_s}, {"iterations", r.iterations},
                    {"trees", r.trees},        {"nodes", r.nodes},
-                   {"rejected_links", r.rejected_links}});
+                   {"rejected_links", r.rejected_links}, {"load_time_s", load_time_s},
+                   {"job_time_s", s.wall_time_s}});
   std::cerr << t.scene().name << ", " << s.planner << ", seed " << seed << ": "
             << (r.solved ? "solved" : "not solved: " + r.message) << " in " << r.planning_time_s << " s, "
             << r.iterations << " iterations, " << r.trees << " trees, " << r.nodes << " nodes\n";

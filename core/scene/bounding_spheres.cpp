@@ -65,9 +65,17 @@ double max_distance(const std::vector<Vec>& points, const Vec& c, size_t* farthe
 
 // A small sphere around the points: Ritter's start, refined by Badoiu-Clarkson steps towards
 // the farthest point. Only the centre is approximate: the radius is the exact largest distance.
-BoundingSphere enclose(const std::vector<Vec>& points) {
+// The centre of many points is found from at most 4096 of them, evenly strided (the steps pass
+// over the points 20 times; the radius, once over all of them, keeps the sphere enclosing).
+BoundingSphere enclose(const std::vector<Vec>& all) {
   BoundingSphere s;
-  if (points.empty()) return s;
+  if (all.empty()) return s;
+  std::vector<Vec> strided;
+  if (all.size() > 4096) {
+    const size_t stride = (all.size() + 4095) / 4096;
+    for (size_t i = 0; i < all.size(); i += stride) strided.push_back(all[i]);
+  }
+  const std::vector<Vec>& points = strided.empty() ? all : strided;
   size_t i1 = 0, i2 = 0;
   max_distance(points, points[0], &i1);
   max_distance(points, points[i1], &i2);
@@ -90,7 +98,7 @@ BoundingSphere enclose(const std::vector<Vec>& points) {
     c += (points[far] - c) / (it + 1.0);
   }
   s.centre = best_c;
-  s.radius = max_distance(points, best_c);
+  s.radius = max_distance(all, best_c);
   s.radius += bounding_sphere_margin(s);
   return s;
 }
@@ -103,12 +111,23 @@ double bounding_sphere_margin(const BoundingSphere& s) {
 
 namespace {
 
-// k-means (at most k clusters) of the pieces `idx` by centroid, over at most 1024 evenly
+// The index of the centre nearest to p (the first of equals).
+int nearest_centre(const std::vector<Vec>& centres, const Vec& p) {
+  int best = 0;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < static_cast<int>(centres.size()); ++c) {
+    const double d = (p - centres[static_cast<size_t>(c)]).squaredNorm();
+    if (d < best_d) best_d = d, best = c;
+  }
+  return best;
+}
+
+// k-means (at most k clusters) of the pieces `idx` by their centroids, over at most 1024 evenly
 // strided samples, seeded deterministically by farthest points. Empty clusters are dropped.
-std::vector<std::vector<size_t>> clusters_of(const std::vector<Piece>& ps, const std::vector<size_t>& idx, int k) {
+std::vector<std::vector<size_t>> clusters_of(const std::vector<Vec>& centroids, const std::vector<size_t>& idx, int k) {
   std::vector<Vec> samples;
   const size_t stride = std::max<size_t>(1, idx.size() / 1024);
-  for (size_t i = 0; i < idx.size(); i += stride) samples.push_back(ps[idx[i]].centroid());
+  for (size_t i = 0; i < idx.size(); i += stride) samples.push_back(centroids[idx[i]]);
   k = std::max(1, std::min<int>(k, static_cast<int>(samples.size())));
   Vec mean = Vec::Zero();
   for (const Vec& p : samples) mean += p;
@@ -123,28 +142,26 @@ std::vector<std::vector<size_t>> clusters_of(const std::vector<Piece>& ps, const
       nearest[i] = c == 0 ? (samples[i] - centres[0]).squaredNorm()
                           : std::min(nearest[i], (samples[i] - centres.back()).squaredNorm());
   }
-  auto closest = [&](const Vec& p) {
-    int best = 0;
-    double best_d = std::numeric_limits<double>::infinity();
-    for (int c = 0; c < static_cast<int>(centres.size()); ++c) {
-      const double d = (p - centres[c]).squaredNorm();
-      if (d < best_d) best_d = d, best = c;
-    }
-    return best;
-  };
+  // Up to 10 rounds; once a round assigns every sample as the last did, its centres are the
+  // last round's to the bit, and so would every further round's be.
+  std::vector<int> assigned(samples.size(), -1);
   for (int it = 0; it < 10; ++it) {
     std::vector<Vec> sum(centres.size(), Vec::Zero());
     std::vector<int> count(centres.size(), 0);
-    for (const Vec& p : samples) {
-      const int c = closest(p);
-      sum[c] += p;
-      ++count[c];
+    bool changed = false;
+    for (size_t i = 0; i < samples.size(); ++i) {
+      const int c = nearest_centre(centres, samples[i]);
+      changed |= c != assigned[i];
+      assigned[i] = c;
+      sum[static_cast<size_t>(c)] += samples[i];
+      ++count[static_cast<size_t>(c)];
     }
+    if (!changed) break;
     for (size_t c = 0; c < centres.size(); ++c)
       if (count[c] > 0) centres[c] = sum[c] / count[c];
   }
   std::vector<std::vector<size_t>> out(centres.size());
-  for (size_t i : idx) out[closest(ps[i].centroid())].push_back(i);
+  for (size_t i : idx) out[static_cast<size_t>(nearest_centre(centres, centroids[i]))].push_back(i);
   out.erase(std::remove_if(out.begin(), out.end(), [](const auto& c) { return c.empty(); }), out.end());
   return out;
 }
@@ -204,12 +221,12 @@ std::vector<std::array<Vec, 2>> long_spread_edges(const std::vector<Vec>& vertic
 SphereSet fit_bounding_spheres(const std::vector<Eigen::Vector3d>& vertices,
                                const std::vector<std::array<std::uint32_t, 3>>& triangles, int max_parts) {
   SphereSet set;
-  std::vector<Vec> used;
-  used.reserve(triangles.size() * 3);
+  std::vector<Vec> used;  // the vertices of the triangles, each once
+  std::vector<char> seen(vertices.size(), 0);
   for (const auto& t : triangles)
     for (int k = 0; k < 3; ++k) {
       if (t[k] >= vertices.size() || !vertices[t[k]].allFinite()) return {};  // no bound: FCL decides
-      used.push_back(vertices[t[k]]);
+      if (!seen[t[k]]) seen[t[k]] = 1, used.push_back(vertices[t[k]]);
     }
   if (used.empty()) return {};
   set.all = enclose(used);
@@ -222,12 +239,13 @@ SphereSet fit_bounding_spheres(const std::vector<Eigen::Vector3d>& vertices,
     ps = pieces(vertices, triangles, max_edge);
   }
   std::vector<size_t> every(ps.size());
-  for (size_t i = 0; i < ps.size(); ++i) every[i] = i;
+  std::vector<Vec> centroids(ps.size());
+  for (size_t i = 0; i < ps.size(); ++i) every[i] = i, centroids[i] = ps[i].centroid();
   // Each part's pieces clustered again: the part's children.
-  for (const auto& part : clusters_of(ps, every, max_parts)) {
+  for (const auto& part : clusters_of(centroids, every, max_parts)) {
     set.parts.push_back(enclose_pieces(ps, part));
     set.children_begin.push_back(static_cast<int>(set.children.size()));
-    for (const auto& child : clusters_of(ps, part, max_parts)) set.children.push_back(enclose_pieces(ps, child));
+    for (const auto& child : clusters_of(centroids, part, max_parts)) set.children.push_back(enclose_pieces(ps, child));
   }
   set.children_begin.push_back(static_cast<int>(set.children.size()));
 

@@ -13,6 +13,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/parallel_for.h"
+
 namespace demoplan {
 
 namespace {
@@ -152,6 +154,21 @@ SharedMesh shared_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
 std::shared_ptr<const fcl::CollisionObjectd> shared_mesh_bvh(const TriangleMesh& mesh,
                                                              const Eigen::Vector3d& scale) {
   return shared_mesh(mesh, scale).bvh;
+}
+
+void fit_meshes(const std::vector<std::pair<const TriangleMesh*, Eigen::Vector3d>>& meshes, int threads) {
+  std::vector<size_t> order(meshes.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return meshes[a].first->triangles.size() > meshes[b].first->triangles.size();
+  });
+  parallel_for(order.size(), threads, [&](size_t k) {
+    const auto& [mesh, scale] = meshes[order[k]];
+    try {
+      shared_mesh(*mesh, scale);
+    } catch (const std::exception&) {  // never out of a worker thread; raised again when used
+    }
+  });
 }
 
 std::size_t bvh_fits() { return fit_count.load(); }

@@ -13,6 +13,8 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "core/model/mesh.h"
 #include "core/scene/bounding_spheres.h"
@@ -38,6 +40,11 @@ struct SharedMesh {
   std::shared_ptr<const SphereSet> spheres;
 };
 SharedMesh shared_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale);
+
+// Fits those of the meshes (with their scales) not in the cache yet, on up to `threads` threads,
+// the largest first: a process's first checker has a dozen meshes to fit, about half a second
+// on one core. A mesh that cannot be fitted is skipped; shared_mesh raises its error.
+void fit_meshes(const std::vector<std::pair<const TriangleMesh*, Eigen::Vector3d>>& meshes, int threads);
 
 // Number of BVHs fitted in this process so far.
 std::size_t bvh_fits();

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <set>
+#include <thread>
 
 #include "core/error.h"
 #include "core/scene/bvh_cache.h"
@@ -298,6 +299,7 @@ struct CollisionChecker::Impl {
 CollisionChecker::CollisionChecker(const Scene& scene, CollisionOptions options)
     : scene_(scene), impl_(std::make_unique<Impl>()) {
   impl_->options = options;
+  fit_meshes(collision_meshes(scene), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   auto add = [&](std::vector<GeomInfo>& list, GeomInfo info, const Geometry& g) {
     Prototype p = make_prototype(g);
     info.prototype = std::move(p.object);

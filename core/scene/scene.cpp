@@ -24,4 +24,17 @@ Attachment attach_to_gripper(const Scene& scene, const SceneState& state, int ob
   return {object, r.gripper_link, link.inverse() * state.objects[object]};
 }
 
+std::vector<std::pair<const TriangleMesh*, Eigen::Vector3d>> collision_meshes(const Scene& scene) {
+  std::vector<std::pair<const TriangleMesh*, Eigen::Vector3d>> out;
+  auto take = [&](const RobotModel& model) {
+    for (const auto& link : model.links)
+      for (const auto& g : link.collisions)
+        if (const auto* m = std::get_if<MeshShape>(&g.shape); m && m->mesh) out.emplace_back(m->mesh.get(), m->scale);
+  };
+  take(scene.robot.model);
+  for (const auto& o : scene.objects) take(o.model);
+  for (const auto& f : scene.furniture) take(f.model);
+  return out;
+}
+
 }  // namespace demoplan

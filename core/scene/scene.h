@@ -3,6 +3,7 @@
 // Scene is constant during planning; SceneState is one configuration of it.
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/geometry/se3.h"
@@ -73,5 +74,8 @@ void update_attached_objects(const PoseVector& robot_link_poses, SceneState& sta
 Pose gripper_pose(const Scene& scene, const Eigen::VectorXd& q);
 // Attaches an object to the gripper link where it is now (relative pose kept).
 Attachment attach_to_gripper(const Scene& scene, const SceneState& state, int object);
+
+// Every collision mesh of the robot, the objects and the furniture, with its scale.
+std::vector<std::pair<const TriangleMesh*, Eigen::Vector3d>> collision_meshes(const Scene& scene);
 
 }  // namespace demoplan
