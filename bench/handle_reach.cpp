@@ -157,16 +157,11 @@ int main(int argc, char** argv) {
     } else if (n_placements > 0 && static_cast<int>(part.placements.size()) > n_placements) {
       part.placements.resize(n_placements);
     }
-    // The test's matching rule.
     const GraspReport r = generate_handles(*mesh, 0.001, com, gripper);
     part.generated = r.handles.size();
     for (const auto& s : part.object.srdf.handles) {
       bool found = false;
-      for (const auto& g : r.handles) {
-        const double d = (g.frame.pose.translation() - s.pose.translation()).norm();
-        const double a = Eigen::AngleAxisd(g.frame.pose.linear().transpose() * s.pose.linear()).angle();
-        found |= d <= 0.01 && a <= 15 * M_PI / 180;
-      }
+      for (const auto& g : r.handles) found |= handle_matches(g.frame.pose, s.pose);
       part.matched.push_back(found);
     }
     parts.push_back(std::move(part));

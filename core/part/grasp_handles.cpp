@@ -386,4 +386,10 @@ GraspReport use_generated_handles(SceneObject& object, const ParallelGripper& gr
   throw InputError(object.srdf.path, "handles", "'" + object.id + "' has no collision mesh on its root link");
 }
 
+bool handle_matches(const Pose& generated, const Pose& hand_made) {
+  const double d = (generated.translation() - hand_made.translation()).norm();
+  const double a = Eigen::AngleAxisd(generated.linear().transpose() * hand_made.linear()).angle();
+  return d <= 0.01 && a <= 15 * M_PI / 180;
+}
+
 }  // namespace demoplan

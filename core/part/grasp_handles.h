@@ -73,6 +73,10 @@ GraspReport generate_handles(const TriangleMesh& mesh, double scale, const Eigen
                              const ParallelGripper& gripper, const GraspOptions& options = {},
                              const std::string& link = "base_link", const std::string& prefix = "grasp_");
 
+// Whether a generated handle stands for a hand-made one: within 1 cm and 15 degrees (the
+// rotation between the two frames), the rule by which the generator is measured (issue 15).
+bool handle_matches(const Pose& generated, const Pose& hand_made);
+
 // Replaces the handles of a scene's object (its first collision mesh is the part) by generated
 // ones: the generator measured against hand-made handles on the benchmark. Returns the report;
 // throws InputError naming the object's SRDF when it has no mesh or no handle is found.

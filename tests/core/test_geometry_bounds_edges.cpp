@@ -78,6 +78,12 @@ Pose translation(double x, double y, double z) {
   return p;
 }
 
+// A solid primitive, as the fast path bounds it and as FCL holds it.
+struct Solid {
+  GeometryBound bound;
+  std::shared_ptr<fcl::CollisionGeometryd> fcl;
+};
+
 Pose random_pose(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(-1, 1);
   Pose p = Pose::Identity();
@@ -160,11 +166,7 @@ TEST(GeometryBounds, EdgeProofNeverWhereFclIsFree) {
   // a slant. Wherever the proof says touching, FCL must collide.
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1, 1), u01(0, 1);
-  struct Shape {
-    GeometryBound bound;
-    std::shared_ptr<fcl::CollisionGeometryd> fcl;
-  };
-  const std::vector<Shape> shapes = {
+  const std::vector<Solid> shapes = {
       {box_bound(Vec(0.4, 0.3, 0.025)), std::make_shared<fcl::Boxd>(0.4, 0.3, 0.025)},
       {box_bound(Vec(1.3, 0.05, 0.7)), std::make_shared<fcl::Boxd>(1.3, 0.05, 0.7)},
       {cylinder_bound(0.04, 0.6), std::make_shared<fcl::Cylinderd>(0.04, 0.6)},
@@ -173,7 +175,7 @@ TEST(GeometryBounds, EdgeProofNeverWhereFclIsFree) {
   };
   int proven = 0, fcl_only = 0, free = 0;
   for (int i = 0; i < 6000; ++i) {
-    const Shape& s = shapes[i % shapes.size()];
+    const Solid& s = shapes[i % shapes.size()];
     const auto [x, n] = surface_point(s.bound, rng);
     const double depth = 20e-6 * u(rng);  // > 0: inside
     Vec d = Vec(u(rng), u(rng), u(rng)).normalized();
@@ -206,11 +208,7 @@ TEST(GeometryBounds, BoxEdgeProofNeverWhereFclIsFree) {
   std::uniform_real_distribution<double> u(-1, 1), u01(0, 1);
   const GeometryBound box_a = box_bound(Vec(1.0, 0.6, 0.7));
   const auto fcl_a = std::make_shared<fcl::Boxd>(1.0, 0.6, 0.7);
-  struct Shape {
-    GeometryBound bound;
-    std::shared_ptr<fcl::CollisionGeometryd> fcl;
-  };
-  const std::vector<Shape> others = {
+  const std::vector<Solid> others = {
       {box_bound(Vec(0.05, 0.05, 0.75)), std::make_shared<fcl::Boxd>(0.05, 0.05, 0.75)},
       {box_bound(Vec(1.5, 1.1, 0.03)), std::make_shared<fcl::Boxd>(1.5, 1.1, 0.03)},
       {cylinder_bound(0.05, 0.4), std::make_shared<fcl::Cylinderd>(0.05, 0.4)},
@@ -218,7 +216,7 @@ TEST(GeometryBounds, BoxEdgeProofNeverWhereFclIsFree) {
   };
   int proven = 0, free = 0;
   for (int i = 0; i < 2000; ++i) {
-    const Shape& s = others[i % others.size()];
+    const Solid& s = others[i % others.size()];
     const Pose pa = random_pose(rng);
     Pose pb = random_pose(rng);
     if (i % 2) pb.linear() = pa.linear() * Eigen::AngleAxisd(M_PI * u(rng), Vec::UnitZ()).toRotationMatrix();  // level

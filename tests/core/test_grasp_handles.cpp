@@ -109,11 +109,7 @@ TEST(GraspHandles, YcbvPartsGetHandlesCloseToTheHandMadeOnes) {
     int part_matched = 0;
     for (const auto& s : srdf.handles) {
       bool found = false;
-      for (const auto& g : r.handles) {
-        const double d = (g.frame.pose.translation() - s.pose.translation()).norm();
-        const double a = Eigen::AngleAxisd(g.frame.pose.linear().transpose() * s.pose.linear()).angle();
-        found |= d <= 0.01 && a <= 15 * M_PI / 180;
-      }
+      for (const auto& g : r.handles) found |= handle_matches(g.frame.pose, s.pose);
       part_matched += found;
     }
     std::printf("%s: %d of %zu SRDF handles matched by %zu generated (%.0f ms)\n", name.c_str(), part_matched,
