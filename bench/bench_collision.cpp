@@ -12,6 +12,7 @@
 
 #include "core/demo/benchmark_scene.h"
 #include "core/scene/bounding_spheres.h"
+#include "core/scene/bvh_cache.h"
 #include "core/scene/collision_checker.h"
 
 #include <fcl/fcl.h>
@@ -144,9 +145,7 @@ struct ScaledMesh {
 std::vector<ScaledMesh> scene_meshes(const Scene& scene) {
   std::vector<ScaledMesh> out;
   for (const auto& [mesh, scale] : collision_meshes(scene)) {
-    ScaledMesh s{{}, mesh};
-    for (const auto& v : mesh->vertices) s.vertices.push_back(v.cast<double>().cwiseProduct(scale));
-    out.push_back(std::move(s));
+    out.push_back({scaled_vertices(*mesh, scale), mesh});
   }
   return out;
 }

@@ -11,6 +11,7 @@
 #include "core/graph/graph_description.h"
 #include "core/planning/plan_job.h"
 #include "core/planning/planner_registry.h"
+#include "core/scene/bvh_cache.h"
 
 namespace demoplan::cli {
 
@@ -44,7 +45,8 @@ int run_plan(const PlanOptions& o) {
                    {"planning_time_s", r.planning_time_s}, {"iterations", r.iterations},
                    {"trees", r.trees},        {"nodes", r.nodes},
                    {"rejected_links", r.rejected_links}, {"load_time_s", load_time_s},
-                   {"job_time_s", s.wall_time_s}});
+                   {"job_time_s", s.wall_time_s}, {"meshes_fitted", bvh_fits()},
+                   {"meshes_read", bvh_reads()}});
   std::cerr << t.scene().name << ", " << s.planner << ", seed " << seed << ": "
             << (r.solved ? "solved" : "not solved: " + r.message) << " in " << r.planning_time_s << " s, "
             << r.iterations << " iterations, " << r.trees << " trees, " << r.nodes << " nodes\n";

@@ -39,12 +39,17 @@ int run_in_video_executable(char** argv) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path bin = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  if (ec) {
+    std::cerr << "error: " << argv[1] << " runs in demoplan-cli-video, and this program cannot find its own folder ("
+              << ec.message() << ")\n";
+    return kFailed;
+  }
   // Beside demoplan-cli in the build tree, in <prefix>/lib/demoplan when installed.
   fs::path video = bin / "demoplan-cli-video";
   if (!fs::exists(video)) video = bin.parent_path() / "lib/demoplan/demoplan-cli-video";
-  if (ec || !fs::exists(video)) {
-    std::cerr << "error: " << argv[1] << " runs in demoplan-cli-video, found neither beside "
-              << (ec ? std::string("demoplan-cli") : bin.string()) << " nor in ../lib/demoplan\n";
+  if (!fs::exists(video)) {
+    std::cerr << "error: " << argv[1] << " runs in demoplan-cli-video, found neither beside " << bin.string()
+              << " nor in ../lib/demoplan\n";
     return kFailed;
   }
   execv(video.c_str(), argv);

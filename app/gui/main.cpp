@@ -12,6 +12,8 @@
 #include <cstdio>
 
 #include "app/common/data_dir.h"
+#include "core/scene/bvh_cache.h"
+#include "core/scene/fitted_mesh_store.h"
 #include "ui/document/document.h"
 #include "ui/mainwindow/main_window.h"
 
@@ -61,6 +63,8 @@ int main(int argc, char** argv) {
   QSurfaceFormat::setDefaultFormat(format);
 
   QApplication app(argc, argv);
+  // Fitted meshes from earlier runs (bvh_cache.h): a scene loads without fitting.
+  demoplan::set_fitted_mesh_folder(demoplan::default_fitted_mesh_folder());
   QApplication::setOrganizationName(QStringLiteral("demoplan"));
   QApplication::setApplicationName(QStringLiteral("demoplan"));
   QApplication::setApplicationVersion(QStringLiteral(DEMOPLAN_VERSION));

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "core/geometry/polygon_2d.h"
 #include "core/io/json_file.h"
+#include "core/model/concurrent_urdfs.h"
 
 namespace demoplan {
 
@@ -131,9 +132,16 @@ Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_
   const BenchmarkRobot info = load_benchmark_robot(task.data_dir, robot_name);
   const auto [poses_json, key] = pose_file_entry(task, robot_name, pose_id);
   const JsonField poses(poses_json, task.robot_pose_files.at(robot_name));
+  // Every URDF read at once: the robot's, then the furniture's, then the planning objects'.
+  std::vector<std::string> urdfs = {info.urdf};
+  for (const auto& f : task.furniture) urdfs.push_back(f.urdf);
+  const std::vector<size_t> rows = task.planning_rows();
+  for (size_t row : rows) urdfs.push_back(task.objects[row].urdf);
+  ConcurrentUrdfs models(urdfs, urdf_options);
+  size_t next_model = 0;
   SceneRobot& robot = scene.robot;
   robot.name = robot_name;
-  robot.model = load_urdf(info.urdf, urdf_options);
+  robot.model = models.take(next_model++);
   robot.srdf = load_srdf(info.srdf);
   robot.base = poses["poses"][key].pose();
   robot.fixed_base = info.fixed_base;
@@ -155,7 +163,7 @@ Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_
     SceneFurniture fu;
     fu.kind = f.kind;
     fu.name = fs::path(f.urdf).stem().string();
-    fu.model = load_urdf(f.urdf, urdf_options);
+    fu.model = models.take(next_model++);
     fu.srdf = load_srdf(f.srdf);
     check_srdf_links(fu.srdf, fu.model, f.urdf);
     forward_kinematics(fu.model, Eigen::VectorXd::Zero(fu.model.nq), Pose::Identity(), fu.link_poses);
@@ -173,12 +181,12 @@ Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_
   }
 
   // Planning objects (trays are not part of the collision model), in planning_object_ids order.
-  for (size_t row : task.planning_rows()) {
+  for (size_t row : rows) {
     const auto& o = task.objects[row];
     SceneObject so;
     so.id = o.id;
     so.model_name = o.model_name;
-    so.model = load_urdf(o.urdf, urdf_options);
+    so.model = models.take(next_model++);
     so.srdf = load_srdf(o.srdf);
     check_srdf_links(so.srdf, so.model, o.urdf);
     if (so.model.nq != 0) throw InputError(o.urdf, "", "objects must be rigid (fixed joints only)");

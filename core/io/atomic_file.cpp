@@ -1,5 +1,8 @@
 #include "core/io/atomic_file.h"
 
+#include <unistd.h>
+
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 
@@ -8,7 +11,10 @@
 namespace demoplan {
 
 void write_file_atomic(const std::string& path, std::string_view bytes) {
-  const std::string tmp = path + ".tmp";
+  // A name of this process and call: two writers of one file (two processes filling a cache)
+  // never share the temporary file; the last rename wins, whole.
+  static std::atomic<unsigned> calls{0};
+  const std::string tmp = path + ".tmp" + std::to_string(getpid()) + "-" + std::to_string(calls++);
   {
     std::ofstream out(tmp, std::ios::trunc | std::ios::binary);
     if (!out) throw InputError(path, "", "cannot write file");

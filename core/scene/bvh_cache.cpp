@@ -8,12 +8,15 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <future>
 #include <mutex>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
 #include "core/parallel_for.h"
+#include "core/scene/fitted_mesh_store.h"
 
 namespace demoplan {
 
@@ -31,8 +34,7 @@ struct FitInput {
 FitInput scaled(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
   FitInput in;
   in.mesh_triangles = &mesh.triangles;
-  in.vertices.reserve(mesh.vertices.size());
-  for (const auto& v : mesh.vertices) in.vertices.push_back(v.cast<double>().cwiseProduct(scale));
+  in.vertices = scaled_vertices(mesh, scale);
   in.triangles.reserve(mesh.triangles.size());
   for (const auto& t : mesh.triangles) in.triangles.emplace_back(t[0], t[1], t[2]);
   return in;
@@ -69,17 +71,38 @@ bool fitted_from(const fcl::CollisionObjectd& object, const FitInput& in) {
   return true;
 }
 
-std::atomic<std::size_t> fit_count{0};
+std::atomic<std::size_t> fit_count{0}, read_count{0};
 
+std::mutex folder_mutex;
+std::string folder_of_fits;  // set_fitted_mesh_folder
+
+std::string fitted_mesh_folder() {
+  std::lock_guard lock(folder_mutex);
+  return folder_of_fits;
+}
+
+// From the folder of fitted meshes when it holds this one, else fitted (and stored there).
 SharedMesh fit(const FitInput& in) {
-  auto bvh = std::make_shared<Bvh>();
-  bvh->beginModel(static_cast<int>(in.triangles.size()), static_cast<int>(in.vertices.size()));
-  bvh->addSubModel(in.vertices, in.triangles);
-  bvh->endModel();
+  const std::string folder = fitted_mesh_folder();
+  const MeshKey key = folder.empty() ? MeshKey{} : mesh_key(in.vertices, *in.mesh_triangles);
+  std::shared_ptr<Bvh> bvh;
+  std::shared_ptr<const SphereSet> spheres;
+  if (auto stored = read_fitted_mesh(folder, key)) {
+    bvh = build_obbrss_tree(in.vertices, *in.mesh_triangles, &stored->tree);
+    if (bvh) {
+      spheres = std::make_shared<const SphereSet>(std::move(stored->spheres));
+      ++read_count;
+    }
+  }
+  if (!bvh) {
+    RecordedFit record;
+    bvh = build_obbrss_tree(in.vertices, *in.mesh_triangles, nullptr, folder.empty() ? nullptr : &record);
+    spheres = std::make_shared<const SphereSet>(fit_bounding_spheres(in.vertices, *in.mesh_triangles));
+    ++fit_count;
+    write_fitted_mesh(folder, key, {std::move(record), *spheres});
+  }
   // The constructor computes the geometry's local AABB: here, before any other thread sees it.
   auto object = std::make_shared<const fcl::CollisionObjectd>(bvh);
-  auto spheres = std::make_shared<const SphereSet>(fit_bounding_spheres(in.vertices, *in.mesh_triangles));
-  ++fit_count;
   return {std::move(object), std::move(spheres)};
 }
 
@@ -97,19 +120,36 @@ Cache& cache() {
   return c;
 }
 
-SharedMesh find_or_fit(const FitInput& in, std::uint64_t hash) {
+std::vector<std::shared_ptr<Entry>> entries_of(std::uint64_t hash) {
   Cache& c = cache();
   std::vector<std::shared_ptr<Entry>> candidates;
-  {
-    std::lock_guard lock(c.mutex);
-    auto [begin, end] = c.entries.equal_range(hash);
-    for (auto it = begin; it != end; ++it) candidates.push_back(it->second);
-  }
-  // Outside the lock: a candidate may still be fitting in another thread.
+  std::lock_guard lock(c.mutex);
+  auto [begin, end] = c.entries.equal_range(hash);
+  for (auto it = begin; it != end; ++it) candidates.push_back(it->second);
+  return candidates;
+}
+
+// Outside the lock: a candidate may still be fitting in another thread.
+std::optional<SharedMesh> fitted_among(const std::vector<std::shared_ptr<Entry>>& candidates, const FitInput& in) {
   for (const auto& e : candidates) {
     SharedMesh o = e->object.get();
     if (fitted_from(*o.bvh, in)) return o;
   }
+  return std::nullopt;
+}
+
+std::optional<SharedMesh> find_fitted(const FitInput& in, std::uint64_t hash) {
+  try {
+    return fitted_among(entries_of(hash), in);
+  } catch (...) {  // a fit of the same hash failed in another thread: fit here, which raises it again
+    return std::nullopt;
+  }
+}
+
+SharedMesh find_or_fit(const FitInput& in, std::uint64_t hash) {
+  Cache& c = cache();
+  const std::vector<std::shared_ptr<Entry>> candidates = entries_of(hash);
+  if (auto hit = fitted_among(candidates, in)) return *hit;
 
   std::promise<SharedMesh> promise;
   const auto mine = std::make_shared<Entry>(Entry{promise.get_future().share()});
@@ -156,21 +196,48 @@ std::shared_ptr<const fcl::CollisionObjectd> shared_mesh_bvh(const TriangleMesh&
   return shared_mesh(mesh, scale).bvh;
 }
 
-void fit_meshes(const std::vector<std::pair<const TriangleMesh*, Eigen::Vector3d>>& meshes, int threads) {
-  std::vector<size_t> order(meshes.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return meshes[a].first->triangles.size() > meshes[b].first->triangles.size();
-  });
-  parallel_for(order.size(), threads, [&](size_t k) {
-    const auto& [mesh, scale] = meshes[order[k]];
+std::vector<SharedMesh> shared_meshes(const std::vector<std::pair<const TriangleMesh*, Eigen::Vector3d>>& meshes,
+                                      int threads) {
+  std::vector<SharedMesh> out(meshes.size());
+  std::vector<FitInput> inputs(meshes.size());
+  std::vector<std::uint64_t> hashes(meshes.size());
+  std::vector<size_t> misses;
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    inputs[i] = scaled(*meshes[i].first, meshes[i].second);
+    hashes[i] = content_hash(inputs[i]);
+    if (auto hit = find_fitted(inputs[i], hashes[i])) out[i] = std::move(*hit);
+    else misses.push_back(i);
+  }
+  std::stable_sort(misses.begin(), misses.end(),
+                   [&](size_t a, size_t b) { return inputs[a].triangles.size() > inputs[b].triangles.size(); });
+  std::vector<std::exception_ptr> errors(meshes.size());
+  parallel_for(misses.size(), threads, [&](size_t k) {
+    const size_t i = misses[k];
     try {
-      shared_mesh(*mesh, scale);
-    } catch (const std::exception&) {  // never out of a worker thread; raised again when used
+      out[i] = find_or_fit(inputs[i], hashes[i]);
+    } catch (...) {  // never out of a worker thread
+      errors[i] = std::current_exception();
     }
   });
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  return out;
+}
+
+std::vector<Eigen::Vector3d> scaled_vertices(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(mesh.vertices.size());
+  for (const auto& v : mesh.vertices) out.push_back(v.cast<double>().cwiseProduct(scale));
+  return out;
 }
 
 std::size_t bvh_fits() { return fit_count.load(); }
+
+std::size_t bvh_reads() { return read_count.load(); }
+
+void set_fitted_mesh_folder(const std::string& folder) {
+  std::lock_guard lock(folder_mutex);
+  folder_of_fits = folder;
+}
 
 }  // namespace demoplan

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -41,12 +42,24 @@ struct SharedMesh {
 };
 SharedMesh shared_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale);
 
-// Fits those of the meshes (with their scales) not in the cache yet, on up to `threads` threads,
-// the largest first: a process's first checker has a dozen meshes to fit, about half a second
-// on one core. A mesh that cannot be fitted is skipped; shared_mesh raises its error.
-void fit_meshes(const std::vector<std::pair<const TriangleMesh*, Eigen::Vector3d>>& meshes, int threads);
+// The shared mesh of each input (with its scale), in input order. Those not in the cache yet are
+// fitted on up to `threads` threads, the largest first: a process's first checker has a dozen
+// meshes to fit, about half a second on one core. Each mesh is scaled and hashed once; when all
+// are cached no thread is started. A mesh that cannot be fitted raises its error (the first
+// such in input order) after the others are done.
+std::vector<SharedMesh> shared_meshes(const std::vector<std::pair<const TriangleMesh*, Eigen::Vector3d>>& meshes,
+                                      int threads);
 
-// Number of BVHs fitted in this process so far.
+// The mesh's vertices with the scale applied, in double precision: what is fitted.
+std::vector<Eigen::Vector3d> scaled_vertices(const TriangleMesh& mesh, const Eigen::Vector3d& scale);
+
+// Meshes are also kept in `folder` between runs (fitted_mesh_store.h): a mesh fitted is
+// stored there, a mesh stored there is read instead of fitted. "" (the default): no folder.
+// The tools set default_fitted_mesh_folder() at their start.
+void set_fitted_mesh_folder(const std::string& folder);
+
+// Number of meshes fitted in this process so far, and read from the folder instead.
 std::size_t bvh_fits();
+std::size_t bvh_reads();
 
 }  // namespace demoplan

@@ -3,6 +3,7 @@
 #include <fcl/fcl.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -62,13 +63,10 @@ struct Prototype {
   GeometryBound bound;
 };
 
-// An object at the identity to copy (see bvh_cache.h), and its bounds. Meshes come fitted from
-// the process-wide cache with their spheres; primitives are cheap and belong to this checker.
-Prototype make_prototype(const Geometry& g) {
-  if (const auto* m = std::get_if<MeshShape>(&g.shape)) {
-    SharedMesh shared = shared_mesh(*m->mesh, m->scale);
-    return {std::move(shared.bvh), mesh_bound(std::move(shared.spheres))};
-  }
+// An object at the identity to copy (see bvh_cache.h), and its bounds. A mesh comes fitted from
+// the process-wide cache with its spheres (`fitted`); primitives are cheap and belong to this checker.
+Prototype make_prototype(const Geometry& g, const SharedMesh& fitted) {
+  if (std::holds_alternative<MeshShape>(g.shape)) return {fitted.bvh, mesh_bound(fitted.spheres)};
   GeometryBound bound;
   if (auto* b = std::get_if<BoxShape>(&g.shape)) bound = box_bound(b->size);
   else if (auto* c = std::get_if<CylinderShape>(&g.shape)) bound = cylinder_bound(c->radius, c->length);
@@ -299,9 +297,16 @@ struct CollisionChecker::Impl {
 CollisionChecker::CollisionChecker(const Scene& scene, CollisionOptions options)
     : scene_(scene), impl_(std::make_unique<Impl>()) {
   impl_->options = options;
-  fit_meshes(collision_meshes(scene), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  // collision_meshes lists the meshes in the order the geometries are added below.
+  const auto meshes = collision_meshes(scene);
+  const std::vector<SharedMesh> fitted =
+      shared_meshes(meshes, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  size_t next_mesh = 0;
   auto add = [&](std::vector<GeomInfo>& list, GeomInfo info, const Geometry& g) {
-    Prototype p = make_prototype(g);
+    static const SharedMesh none;
+    const auto* m = std::get_if<MeshShape>(&g.shape);
+    if (m && m->mesh) assert(meshes[next_mesh].first == m->mesh.get());
+    Prototype p = make_prototype(g, m && m->mesh ? fitted[next_mesh++] : none);
     info.prototype = std::move(p.object);
     info.bound = std::move(p.bound);
     list.push_back(std::move(info));

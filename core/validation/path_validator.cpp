@@ -1,11 +1,15 @@
 #include "core/validation/path_validator.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "core/model/kinematics.h"
+#include "core/parallel_for.h"
 #include "core/path/path_interpolation.h"
 #include "core/scene/collision_checker.h"
 #include "core/scene/support.h"
@@ -64,6 +68,17 @@ struct GraspPair {
   bool operator<(const GraspPair& o) const { return std::tie(object, handle) < std::tie(o.object, o.handle); }
 };
 
+// What the rules need of one sample.
+struct SampleFacts {
+  SceneState state;
+  bool collides = false;
+  CollisionPair hit;
+  std::set<GraspPair> held;
+  std::vector<int> support_link;    // per object: -2 not placed, -1 on the world, else the robot link
+  std::vector<Pose> support_frame;  // per object: its support link's world pose (identity for the world)
+  int unplaced = -1;                // the first object neither grasped nor placed
+};
+
 }  // namespace
 
 ValidationReport validate_path(const Scene& scene, const ValidationTask& task, const Path& path,
@@ -115,63 +130,98 @@ ValidationReport validate_path(const Scene& scene, const ValidationTask& task, c
   if ((last.q - task.q_initial).norm() > o.error_robot_distance)
     return fail("the robot does not end at its initial configuration", 1.0);
 
+  // Each sample's collisions, grasps and placements are independent of the others: found on
+  // every core, in chunks taken in order, none after the first sample that fails on its own. The
+  // rules between neighbouring samples are then judged in order, so the answer (the first
+  // failure) is the same on any number of cores.
   const CollisionChecker checker(scene);
-  CollisionData data = checker.make_data();
   const std::vector<SupportPolygon> supports = support_polygons(scene);
   const GraspFrame& gripper = scene.robot.gripper();
-  PoseVector links;
-  std::vector<int> support_link_prev(n_objects, -2);
-  SceneState prev;
-  std::set<GraspPair> held_prev;
-  bool have_prev = false;
-  for (double t : ts) {
-    const SceneState s = interp.at(t);
-    CollisionPair hit;
-    // 3: collisions, every pair, no allowed contact.
-    if (checker.in_collision(s, data, {}, &hit)) return fail("collision between " + hit.first + " and " + hit.second, t);
-    forward_kinematics(scene.robot.model, s.q, scene.robot.base, links);
-    const Pose g = links[scene.robot.gripper_link] * gripper.pose;
-    std::set<GraspPair> held;
-    std::vector<int> support_link(n_objects, -2);  // -2: not placed, -1: world, else robot link
-    for (size_t i = 0; i < n_objects; ++i) {
-      const auto& handles = scene.objects[i].srdf.handles;
-      for (size_t h = 0; h < handles.size(); ++h) {
-        if (handles[h].clearance > gripper.clearance) continue;
-        const Pose handle = s.objects[i] * handles[h].pose;
-        if (log6(g.inverse() * handle).norm() < o.error_grasp) held.insert({static_cast<int>(i), static_cast<int>(h)});
-      }
-      const bool grasped = std::any_of(held.begin(), held.end(), [&](auto& p) { return p.object == static_cast<int>(i); });
-      const PlacementResult placed =
-          check_placement(scene, supports, links, static_cast<int>(i), s.objects[i], {o.placement_lower, o.placement_upper});
-      if (placed.placed) support_link[i] = supports[placed.support].robot_link;
-      // 4: every object grasped or placed.
-      if (!grasped && !placed.placed) return fail(scene.objects[i].id + " is neither grasped nor placed", t);
-    }
-    if (have_prev) {
-      // 5: a placed object does not move on its support (the benchmark's intended rule; its code
-      // applies it to the mirrored object, see docs/validation.md), compared in its support's frame.
-      PoseVector plinks;
-      forward_kinematics(scene.robot.model, prev.q, scene.robot.base, plinks);
-      for (size_t i = 0; i < n_objects; ++i) {
-        const bool grasped_now = std::any_of(held.begin(), held.end(), [&](auto& p) { return p.object == static_cast<int>(i); });
-        const bool grasped_before = std::any_of(held_prev.begin(), held_prev.end(), [&](auto& p) { return p.object == static_cast<int>(i); });
-        if (grasped_now || grasped_before || support_link[i] == -2 || support_link[i] != support_link_prev[i]) continue;
-        const int l = support_link[i];
-        const Pose now = l < 0 ? s.objects[i] : links[l].inverse() * s.objects[i];
-        const Pose before = l < 0 ? prev.objects[i] : plinks[l].inverse() * prev.objects[i];
-        if (!near_identity(now, before, o.error_identity)) return fail(scene.objects[i].id + " moves while placed", t);
-      }
-      // compute_n_grasps: (gripper, handle) pairs new since the previous sample.
-      for (const auto& p : held)
-        if (!held_prev.count(p)) {
-          ++r.grasps;
-          r.counted_grasps.push_back({t, scene.objects[p.object].id, scene.objects[p.object].srdf.handles[p.handle].name});
+  std::vector<SampleFacts> facts(ts.size());
+  std::atomic<size_t> first_bad{ts.size()};
+  std::mutex pool_mutex;
+  std::vector<CollisionData> pool;
+  constexpr size_t kChunk = 64;
+  const size_t chunks = (ts.size() + kChunk - 1) / kChunk;
+  parallel_for(chunks, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), [&](size_t c) {
+    if (c * kChunk > first_bad.load()) return;
+    CollisionData data = [&] {
+      std::lock_guard lock(pool_mutex);
+      if (pool.empty()) return checker.make_data();
+      CollisionData d = std::move(pool.back());
+      pool.pop_back();
+      return d;
+    }();
+    PoseVector links;
+    for (size_t k = c * kChunk; k < std::min(ts.size(), (c + 1) * kChunk) && k <= first_bad.load(); ++k) {
+      SampleFacts& f = facts[k];
+      f.state = interp.at(ts[k]);
+      f.support_link.assign(n_objects, -2);
+      f.support_frame.assign(n_objects, Pose::Identity());
+      // 3: collisions, every pair, no allowed contact.
+      f.collides = checker.in_collision(f.state, data, {}, &f.hit);
+      if (!f.collides) {
+        forward_kinematics(scene.robot.model, f.state.q, scene.robot.base, links);
+        const Pose g = links[scene.robot.gripper_link] * gripper.pose;
+        for (size_t i = 0; i < n_objects && f.unplaced < 0; ++i) {
+          const auto& handles = scene.objects[i].srdf.handles;
+          bool grasped = false;
+          for (size_t h = 0; h < handles.size(); ++h) {
+            if (handles[h].clearance > gripper.clearance) continue;
+            const Pose handle = f.state.objects[i] * handles[h].pose;
+            if (log6(g.inverse() * handle).norm() < o.error_grasp) {
+              f.held.insert({static_cast<int>(i), static_cast<int>(h)});
+              grasped = true;
+            }
+          }
+          const PlacementResult placed = check_placement(scene, supports, links, static_cast<int>(i),
+                                                         f.state.objects[i], {o.placement_lower, o.placement_upper});
+          if (placed.placed) {
+            const int l = supports[placed.support].robot_link;
+            f.support_link[i] = l;
+            if (l >= 0) f.support_frame[i] = links[l];
+          }
+          // 4: every object grasped or placed.
+          if (!grasped && !placed.placed) f.unplaced = static_cast<int>(i);
         }
+      }
+      if (f.collides || f.unplaced >= 0) {
+        size_t seen = first_bad.load();
+        while (k < seen && !first_bad.compare_exchange_weak(seen, k)) {
+        }
+        break;
+      }
     }
-    prev = s;
-    held_prev = std::move(held);
-    support_link_prev = support_link;
-    have_prev = true;
+    std::lock_guard lock(pool_mutex);
+    pool.push_back(std::move(data));
+  });
+
+  auto grasped_in = [](const std::set<GraspPair>& held, size_t i) {
+    return std::any_of(held.begin(), held.end(), [&](auto& p) { return p.object == static_cast<int>(i); });
+  };
+  for (size_t k = 0; k < ts.size() && k <= first_bad.load(); ++k) {
+    const SampleFacts& f = facts[k];
+    const double t = ts[k];
+    if (f.collides) return fail("collision between " + f.hit.first + " and " + f.hit.second, t);
+    if (f.unplaced >= 0) return fail(scene.objects[f.unplaced].id + " is neither grasped nor placed", t);
+    if (k == 0) continue;
+    const SampleFacts& prev = facts[k - 1];
+    // 5: a placed object does not move on its support (the benchmark's intended rule; its code
+    // applies it to the mirrored object, see docs/validation.md), compared in its support's frame.
+    for (size_t i = 0; i < n_objects; ++i) {
+      if (grasped_in(f.held, i) || grasped_in(prev.held, i) || f.support_link[i] == -2 ||
+          f.support_link[i] != prev.support_link[i])
+        continue;
+      const Pose now = f.support_frame[i].inverse() * f.state.objects[i];
+      const Pose before = prev.support_frame[i].inverse() * prev.state.objects[i];
+      if (!near_identity(now, before, o.error_identity)) return fail(scene.objects[i].id + " moves while placed", t);
+    }
+    // compute_n_grasps: (gripper, handle) pairs new since the previous sample.
+    for (const auto& p : f.held)
+      if (!prev.held.count(p)) {
+        ++r.grasps;
+        r.counted_grasps.push_back({t, scene.objects[p.object].id, scene.objects[p.object].srdf.handles[p.handle].name});
+      }
   }
   if (!interp.uncarried().empty()) {
     const auto [seg, obj] = interp.uncarried().front();

@@ -1,12 +1,12 @@
 #include "perception/tracking/contour_model_file.h"
 
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "core/io/atomic_file.h"
+#include "core/io/user_cache.h"
 
 namespace demoplan::perception {
 
@@ -101,10 +101,6 @@ ContourModel cached_contour_model(const RenderMesh& mesh, const ContourModelOpti
   return model;
 }
 
-std::string default_contour_cache_folder() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return (fs::path(xdg) / "demoplan" / "contours").string();
-  if (const char* home = std::getenv("HOME"); home && *home) return (fs::path(home) / ".cache" / "demoplan" / "contours").string();
-  return {};
-}
+std::string default_contour_cache_folder() { return user_cache_folder("contours"); }
 
 }  // namespace demoplan::perception

@@ -52,19 +52,25 @@ struct CliResult {
   std::string out, err;
 };
 
-// Runs demoplan-cli with `args`, its output captured in files under `scratch`; `env` is
-// prepended to the command ("NAME=value ").
-inline CliResult run_cli(const std::vector<std::string>& args, const fs::path& scratch, const std::string& env = "") {
-  std::string cmd = env + shell_quote(DEMOPLAN_CLI);
-  for (const auto& a : args) cmd += " " + shell_quote(a);
+// Runs the shell command `cmd`, its output captured in files under `scratch`.
+inline CliResult run_command(const std::string& cmd, const fs::path& scratch) {
   const fs::path out = scratch / "stdout", err = scratch / "stderr";
-  cmd += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
-  const int status = std::system(cmd.c_str());
+  const std::string redirected =
+      cmd + " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
+  const int status = std::system(redirected.c_str());
   CliResult r;
   r.code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
   r.out = read_text(out);
   r.err = read_text(err);
   return r;
+}
+
+// Runs demoplan-cli with `args`, its output captured in files under `scratch`; `env` is
+// prepended to the command ("NAME=value ").
+inline CliResult run_cli(const std::vector<std::string>& args, const fs::path& scratch, const std::string& env = "") {
+  std::string cmd = env + shell_quote(DEMOPLAN_CLI);
+  for (const auto& a : args) cmd += " " + shell_quote(a);
+  return run_command(cmd, scratch);
 }
 
 }  // namespace demoplan::testing_support

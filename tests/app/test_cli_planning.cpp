@@ -99,6 +99,28 @@ TEST_F(CliPlanning, AMarkerFreeDemonstrationIsPlannedValid) {
   EXPECT_EQ(j["grasps"].get<int>(), 2);
 }
 
+TEST_F(CliPlanning, ASecondRunReadsTheFittedMeshesAndPlansTheSame) {
+  // Fitted meshes are kept in the user's cache folder (here a fresh one): the first run fits and
+  // stores them, the second reads them instead, and plans exactly as the first (the shortcut,
+  // bounded by time, left out).
+  const std::string env = "XDG_CACHE_HOME=" + shell_quote((dir_ / "cache").string()) + " ";
+  const std::vector<std::string> args = {"plan", "--task", "shelf_0", "--robot", "panda", "--pose", "1", "--seed", "3",
+                                         "--time-limit", "60", "--no-shortcut", "--json", "--data-dir", DEMOPLAN_DATA_DIR};
+  const CliResult first = run_cli(args, dir_, env);
+  ASSERT_EQ(first.code, 0) << first.err;
+  const CliResult second = run_cli(args, dir_, env);
+  ASSERT_EQ(second.code, 0) << second.err;
+  const Json a = one_object(first), b = one_object(second);
+  EXPECT_GT(a["meshes_fitted"].get<int>(), 5) << first.out;  // the Panda's links, the shelf, the part
+  EXPECT_EQ(a["meshes_read"].get<int>(), 0);
+  EXPECT_EQ(b["meshes_fitted"].get<int>(), 0) << second.out;
+  EXPECT_EQ(b["meshes_read"], a["meshes_fitted"]);
+  EXPECT_TRUE(fs::exists(dir_ / "cache" / "demoplan" / "meshes"));
+  ASSERT_TRUE(a["solved"].get<bool>());
+  EXPECT_TRUE(b["valid"].get<bool>()) << b["validation_message"];
+  for (const char* key : {"iterations", "nodes", "trees", "path_length", "grasps"}) EXPECT_EQ(a[key], b[key]) << key;
+}
+
 TEST_F(CliPlanning, ValidateReadsThePlannedPathBack) {
   const CliResult r = run({"validate", planned().string(), "--task", "shelf_0", "--robot", "panda", "--pose", "1",
                            "--json"});

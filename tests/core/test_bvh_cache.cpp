@@ -116,3 +116,36 @@ TEST(BvhCache, MeshWithoutPathIsFittedOncePerScaleAcrossThreads) {
   EXPECT_NE(scaled, got[0]);
   EXPECT_EQ(bvh_fits(), before + 2);
 }
+
+TEST(BvhCache, SharedMeshesAnswerInInputOrderAndFitOnlyWhatIsMissing) {
+  // Three tetrahedra no file holds, of different sizes (the fit order is by size, the answer's by input).
+  auto tetrahedron = [](float s) {
+    TriangleMesh m;
+    m.vertices = {{0.0f, 0.0f, 0.0f}, {0.29f * s, 0.0f, 0.0f}, {0.0f, 0.33f * s, 0.0f}, {0.0f, 0.0f, 0.43f * s}};
+    m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    return m;
+  };
+  const TriangleMesh a = tetrahedron(1.0f), b = tetrahedron(1.7f);
+  TriangleMesh c = tetrahedron(0.6f);
+  c.triangles.push_back({1, 2, 3});  // more triangles: fitted first
+  const Eigen::Vector3d one = Eigen::Vector3d::Ones(), wide(3.0, 1.0, 1.0);
+  const std::size_t before = bvh_fits();
+
+  const std::vector<std::pair<const TriangleMesh*, Eigen::Vector3d>> meshes = {
+      {&a, one}, {&b, one}, {&c, one}, {&a, wide}, {&a, one}};
+  const std::vector<SharedMesh> got = shared_meshes(meshes, 2);
+  ASSERT_EQ(got.size(), meshes.size());
+  EXPECT_EQ(bvh_fits(), before + 4);  // the repeated (a, one) is fitted once
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    const SharedMesh alone = shared_mesh(*meshes[i].first, meshes[i].second);
+    EXPECT_EQ(got[i].bvh, alone.bvh) << "mesh " << i;
+    EXPECT_EQ(got[i].spheres, alone.spheres) << "mesh " << i;
+  }
+  EXPECT_EQ(got[0].bvh, got[4].bvh);
+  EXPECT_NE(got[0].bvh, got[3].bvh);
+  EXPECT_NE(got[0].bvh, got[1].bvh);
+
+  const std::vector<SharedMesh> again = shared_meshes(meshes, 2);
+  EXPECT_EQ(bvh_fits(), before + 4);
+  for (size_t i = 0; i < meshes.size(); ++i) EXPECT_EQ(again[i].bvh, got[i].bvh) << "mesh " << i;
+}

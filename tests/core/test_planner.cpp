@@ -163,6 +163,27 @@ protected:
     EXPECT_NE(v.message.find(words), std::string::npos) << v.message;
     std::printf("rejected: %s\n", v.message.c_str());
   }
+  // Moves waypoint w's arm to a (seeded random) configuration that hits the table or the
+  // robot's support box.
+  void put_into_table(Waypoint& w, std::uint64_t seed) const {
+    const auto& model = shelf0().scene.robot.model;
+    CollisionData data = shelf0().checker->make_data();
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    CollisionPair hit;
+    do {
+      for (int i = 0; i < 7; ++i) w.q[i] = model.lower_limits()[i] + u(rng) * (model.upper_limits()[i] - model.lower_limits()[i]);
+    } while (!shelf0().checker->in_collision({w.q, w.objects, {}}, data, {}, &hit) ||
+             hit.second.find("table") == std::string::npos);
+  }
+  // The object stays 5 cm above where it was picked while the robot carries it.
+  void float_during_carry() {
+    const size_t g = first_with_action(path, GripperAction::Grasp), r = first_with_action(path, GripperAction::Release);
+    ASSERT_GT(r, g + 2);
+    Pose floating = path.waypoints[g].objects[0];
+    floating.translation().z() += 0.05;
+    for (size_t i = g + 1; i < r; ++i) path.waypoints[i].objects[0] = floating;
+  }
   Path path = solved_path();
 };
 
@@ -176,28 +197,32 @@ TEST_F(BrokenPath, WaypointInCollision) {
   // A waypoint before the grasp moves the arm to a (seeded random) configuration that hits the
   // table or the robot's support box. The first collision on the way there may be another one
   // (the arm sweeping through the object, when the waypoint is near it).
-  Waypoint& w = path.waypoints[first_with_action(path, GripperAction::Grasp) / 2];
-  const auto& model = shelf0().scene.robot.model;
-  CollisionData data = shelf0().checker->make_data();
-  std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> u(0, 1);
-  CollisionPair hit;
-  do {
-    for (int i = 0; i < 7; ++i) w.q[i] = model.lower_limits()[i] + u(rng) * (model.upper_limits()[i] - model.lower_limits()[i]);
-  } while (!shelf0().checker->in_collision({w.q, w.objects, {}}, data, {}, &hit) ||
-           hit.second.find("table") == std::string::npos);
+  put_into_table(path.waypoints[first_with_action(path, GripperAction::Grasp) / 2], 3);
   expect_invalid(path, "collision between ");
 }
 
 TEST_F(BrokenPath, ObjectLeftUnconstrained) {
   // While the robot carries it, the object stays 5 cm above where it was picked: it is neither
   // held (the gripper moves away) nor placed.
-  const size_t g = first_with_action(path, GripperAction::Grasp), r = first_with_action(path, GripperAction::Release);
-  ASSERT_GT(r, g + 2);
-  Pose floating = path.waypoints[g].objects[0];
-  floating.translation().z() += 0.05;
-  for (size_t i = g + 1; i < r; ++i) path.waypoints[i].objects[0] = floating;
+  float_during_carry();
   expect_invalid(path, "neither grasped nor placed");
+}
+
+TEST_F(BrokenPath, TheEarliestOfTwoFailuresIsReported) {
+  // The samples are checked on every core, in chunks: a later failure found first must not win.
+  // Early: an arm configuration hitting the table; late: the object floating during the carry.
+  float_during_carry();
+  const size_t g = first_with_action(path, GripperAction::Grasp);
+  const ValidationReport late = validate_path(shelf0().scene, shelf0().vtask, path);
+  ASSERT_FALSE(late.valid);
+  EXPECT_NE(late.message.find("neither grasped nor placed"), std::string::npos) << late.message;
+
+  put_into_table(path.waypoints[g / 2], 5);
+  const ValidationReport early = validate_path(shelf0().scene, shelf0().vtask, path);
+  ASSERT_FALSE(early.valid);
+  EXPECT_NE(early.message.find("collision between "), std::string::npos) << early.message;
+  EXPECT_LT(early.failure_t, late.failure_t);
+  EXPECT_GT(early.failure_t, 0.0);
 }
 
 TEST_F(BrokenPath, WrongStart) {
