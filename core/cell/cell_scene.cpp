@@ -2,15 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "core/cell/support_surfaces.h"
 #include "core/demo/benchmark_scene.h"
 #include "core/error.h"
 #include "core/model/kinematics.h"
 #include "core/model/mobile_base.h"
+#include "core/parallel_for.h"
 #include "core/part/resting_placements.h"
 
 namespace demoplan {
@@ -277,11 +280,23 @@ Scene build_cell_scene(const Cell& cell, const CellSceneOptions& o, CellSceneRep
     scene.furniture.push_back(cell_furniture(cell, i, o, urdf_options, &supports));
     r.supports.push_back(supports);
   }
+  // The parts on every core (each one's mesh, resting faces and grasps are its own); the first
+  // part in order that fails raises its error, as reading them one by one would.
   const ParallelGripper gripper = parallel_gripper(scene.robot.model, scene.robot.srdf);
+  std::vector<SceneObject> parts(cell.parts.size());
+  std::vector<CellPartReport> reports(cell.parts.size());
+  std::vector<std::exception_ptr> errors(cell.parts.size());
+  parallel_for(cell.parts.size(), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), [&](size_t i) {
+    try {
+      parts[i] = cell_part(cell, i, gripper, o, reports[i]);
+    } catch (...) {
+      errors[i] = std::current_exception();
+    }
+  });
   for (size_t i = 0; i < cell.parts.size(); ++i) {
-    CellPartReport part;
-    scene.objects.push_back(cell_part(cell, i, gripper, o, part));
-    r.parts.push_back(std::move(part));
+    if (errors[i]) std::rethrow_exception(errors[i]);
+    scene.objects.push_back(std::move(parts[i]));
+    r.parts.push_back(std::move(reports[i]));
   }
   return scene;
 }

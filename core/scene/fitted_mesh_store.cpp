@@ -3,11 +3,11 @@
 #include <fcl/config.h>
 #include <fcl/geometry/bvh/detail/BV_fitter.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <stdexcept>
 
 #include "core/io/atomic_file.h"
@@ -230,9 +230,11 @@ std::shared_ptr<Tree> build_obbrss_tree(const std::vector<Eigen::Vector3d>& vert
 
 std::optional<FittedMesh> read_fitted_mesh(const std::string& folder, const MeshKey& key) {
   if (folder.empty()) return std::nullopt;
-  std::ifstream in(file_of(folder, key), std::ios::binary);
+  std::ifstream in(file_of(folder, key), std::ios::binary | std::ios::ate);
   if (!in) return std::nullopt;
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string bytes(static_cast<size_t>(std::max<std::streamoff>(0, in.tellg())), '\0');
+  in.seekg(0);
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) return std::nullopt;
   Reader r{bytes.data(), bytes.data() + bytes.size()};
   char magic[8], fcl_version[16];
   std::uint32_t version = 0;
