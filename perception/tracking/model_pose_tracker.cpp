@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <future>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include <opencv2/calib3d.hpp>
@@ -34,6 +36,11 @@ struct ModelPoseTracker::State {
   cv::Mat furniture_depth;              // the furniture at the occlusion map's scale; empty: none
   cv::Mat last_gray;                    // the last frame, for the surface points' flow
   LightReference light;                 // the start frame's light
+  std::vector<SupportLevel> supports;   // the furniture's upward faces, where a lost part may rest
+  std::vector<Eigen::Matrix3d> rest_rotation;  // each part's world orientation at its last rest
+  std::vector<std::optional<Pose>> rest_find;  // found at rest in the last frame (rest_search), to confirm
+  std::vector<int> unseen;                     // frames each part has not been seen in, in a row
+  std::deque<std::pair<int, cv::Mat>> recent;  // the last frames while a part was not seen (follow_back)
   PoseTracks tracks;
   bool started = false;  // the init frame has been seen
 };
@@ -82,6 +89,9 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.centres.assign(models_.size(), {});
   s.seen_last.assign(models_.size(), true);
   for (const auto& m : models_) s.silhouettes.push_back(m.mesh.geometry());
+  s.rest_find.assign(models_.size(), std::nullopt);
+  s.unseen.assign(models_.size(), 0);
+  if (options_.rest_search) s.supports = support_levels(furniture_);
   if (!furniture_.empty()) {
     Rasterizer r = occlusion_rasterizer();
     for (const auto& f : furniture_)
@@ -121,7 +131,7 @@ Rasterizer ModelPoseTracker::occlusion_rasterizer() const {
   return r;
 }
 
-OcclusionMap ModelPoseTracker::occlusion_map() const {
+OcclusionMap ModelPoseTracker::occlusion_map(int skip) const {
   const State& s = *state_;
   OcclusionMap map;
   const bool furniture = !s.furniture_depth.empty();
@@ -135,6 +145,7 @@ OcclusionMap ModelPoseTracker::occlusion_map() const {
   }
   cv::Mat before;
   for (size_t p = 0; p < models_.size(); ++p) {
+    if (static_cast<int>(p) == skip) continue;
     r.depth().copyTo(before);
     r.draw(s.silhouettes[p], s.camera_T_part[p]);
     map.labels.setTo(static_cast<int>(p + 1), r.depth() < before);
@@ -170,6 +181,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
                    options_.region);
     // Parts rest where a demonstration starts: each holds its depth from the first frame on.
     for (size_t k = 0; k < models_.size(); ++k) s.centres[k].assign(3, centre_in_image(k, s.camera_T_part[k]));
+    for (size_t k = 0; k < models_.size(); ++k) s.rest_rotation.push_back(s.world_T_camera.linear() * s.camera_T_part[k].linear());
     for (size_t k = 0; k < models_.size(); ++k)
       s.reference_contrast[k] = track_region(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
                                              static_cast<int>(k), options_.region).contrast;
@@ -220,14 +232,36 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
           found_again.used_lines >= options_.search_used_fraction * found_again.lines)
         r = found_again;
     }
+    // Still not found: perhaps put down where it could rest; taken once found at the same place
+    // in two frames in a row.
+    bool found_resting = false;
+    // (Every `rest_search_every` frames while it stays lost, and in the frame after a find:
+    // a part lost for long costs less.)
+    const bool rest_search_now = s.rest_find[k] || s.unseen[k] % std::max(options_.rest_search_every, 1) == 0;
+    if (!is_seen(r) && options_.rest_search && !s.supports.empty() && rest_search_now) {
+      const std::optional<RegionFrameResult> found = rest_search(image, part);
+      if (found && s.rest_find[k]) {
+        const Eigen::Vector3d moved = found->camera_T_part * contours_[k]->centre() - *s.rest_find[k] * contours_[k]->centre();
+        if (moved.norm() < options_.rest_confirm_mm * 1e-3) {
+          r = *found;
+          found_resting = true;
+        }
+      }
+      s.rest_find[k] = found ? std::optional<Pose>(found->camera_T_part) : std::nullopt;
+    } else {
+      // Seen where it is: a find at the same place in the next frame is confirmed by it.
+      s.rest_find[k] = is_seen(r) ? std::optional<Pose>(r.camera_T_part) : std::nullopt;
+    }
+    const bool seen_now = is_seen(r) || found_resting;
     const bool seen_before = s.seen_last[k];
-    s.seen_last[k] = is_seen(r);
-    if (!is_seen(r)) {
+    s.seen_last[k] = seen_now;
+    s.unseen[k] = seen_now ? 0 : s.unseen[k] + 1;
+    if (!seen_now) {
       // Keeps its last pose, and whether it rested there: not being seen is no move.
       s.previous[k].reset();
       continue;
     }
-    if (resting[k] && r.hidden_lines > options_.rest_hidden_fraction * r.lines) {
+    if (resting[k] && !found_resting && r.hidden_lines > options_.rest_hidden_fraction * r.lines) {
       // Mostly hidden by other parts or the furniture: what shows of a resting part is too
       // little to move it by; it stays, unmeasured.
       continue;
@@ -250,8 +284,10 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     else
       s.previous[k].reset();
     s.camera_T_part[k] = r.camera_T_part;
-    learn[k] = r.contrast >= options_.learn_contrast * s.reference_contrast[k];
+    // Not from a find at rest: if it were wrong, the colours learnt there would hold it there.
+    learn[k] = !found_resting && r.contrast >= options_.learn_contrast * s.reference_contrast[k];
     learn_part[k] = resting[k];
+    if (resting[k]) s.rest_rotation[k] = s.world_T_camera.linear() * r.camera_T_part.linear();  // how it stands
     s.reference_contrast[k] += options_.reference_rate * (r.contrast - s.reference_contrast[k]);
     PoseSample& sample = s.tracks.samples[k][frame];
     sample.valid = true;
@@ -259,6 +295,14 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     const double used = static_cast<double>(r.used_lines) / r.lines;
     sample.confidence = std::clamp(r.contrast / 0.5, 0.0, 1.0) * std::min(1.0, used / 0.5);
     seen.push_back({part, sample});
+    if (found_resting) follow_back(k, frame, bar);
+  }
+  // The frames a part is missed in, kept a while: where it comes to rest shows how it got there.
+  if (std::all_of(s.seen_last.begin(), s.seen_last.end(), [](bool b) { return b; }) || options_.follow_back_frames <= 0) {
+    s.recent.clear();
+  } else {
+    s.recent.emplace_back(frame, image.clone());
+    if (static_cast<int>(s.recent.size()) > options_.follow_back_frames) s.recent.pop_front();
   }
   const OcclusionMap after = occlusion_map();
   for (size_t k = 0; k < models_.size(); ++k)
@@ -266,6 +310,27 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], after, static_cast<int>(k), s.colors[k],
                    options_.region, learn_part[k]);
   return seen;
+}
+
+void ModelPoseTracker::follow_back(size_t k, int frame, double bar) {
+  State& s = *state_;
+  const OcclusionMap map = occlusion_map(static_cast<int>(k));
+  Pose T = s.camera_T_part[k];
+  for (auto it = s.recent.rbegin(); it != s.recent.rend(); ++it) {
+    const int f = it->first;
+    if (f >= frame) continue;
+    PoseSample& sample = s.tracks.samples[k][f];
+    if (sample.valid) break;  // back where it was seen
+    // Free in depth: it was moving.
+    const RegionFrameResult r =
+        track_region(it->second, s.intrinsics, *contours_[k], s.colors[k], T, map, static_cast<int>(k), options_.region);
+    if (r.contrast < bar || r.lines == 0 || r.used_lines < options_.lost_used_fraction * r.lines) break;
+    T = r.camera_T_part;
+    sample.valid = true;
+    sample.pose = s.world_T_camera * T;
+    const double used = static_cast<double>(r.used_lines) / r.lines;
+    sample.confidence = std::clamp(r.contrast / 0.5, 0.0, 1.0) * std::min(1.0, used / 0.5);
+  }
 }
 
 void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {
@@ -392,6 +457,116 @@ RegionFrameResult ModelPoseTracker::search(const cv::Mat& image, int k, const Oc
     const RegionFrameResult r =
         track_region(image, s.intrinsics, model, s.colors[k], candidates[i].second, map, k, options_.region, true);
     if (i == 0 || r.contrast > best.contrast) best = r;
+  }
+  return best;
+}
+
+std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k) const {
+  const State& s = *state_;
+  const ContourModel& model = *contours_[k];
+  const Pose& last = s.camera_T_part[k];
+  const Eigen::Vector3d c = last * model.centre();
+  if (c.z() < 0.05) return std::nullopt;
+  // Where its centre's image may be now: a grid around where it was last seen.
+  const double radius_px = model.radius() * s.intrinsics.fx / c.z();
+  const double reach = std::max(options_.rest_search_radii * radius_px, 60.0);
+  const double step = std::max(radius_px / options_.rest_search_density, 6.0);
+  const Eigen::Vector2d at = centre_in_image(k, last) + Eigen::Vector2d(s.intrinsics.cx, s.intrinsics.cy);
+  std::vector<Eigen::Vector2d> pixels;
+  for (double dy = -reach; dy <= reach; dy += step)
+    for (double dx = -reach; dx <= reach; dx += step) {
+      const Eigen::Vector2d p = at + Eigen::Vector2d(dx, dy);
+      if (p.x() >= 0 && p.y() >= 0 && p.x() < s.image_size.width && p.y() < s.image_size.height) pixels.push_back(p);
+    }
+  // Turned about the vertical from its last rest: as it was last seen (a carried part is mostly
+  // put down as it was held), and evenly around that.
+  const Eigen::Matrix3d& rest = s.rest_rotation[k];
+  const Eigen::Matrix3d turned = s.world_T_camera.linear() * last.linear() * rest.transpose();
+  const double seen_turn = std::atan2(turned(1, 0), turned(0, 0));
+  std::vector<double> turns;
+  const int turn_count = std::max(options_.rest_search_turns, 1);
+  for (int i = 0; i < turn_count; ++i) turns.push_back(seen_turn + 2 * M_PI * i / turn_count);
+  const RestingPart resting{parts_[k].extent, centre_height(models_[k].mesh, model.centre(), rest)};
+  const std::vector<RestingCandidate> candidates =
+      resting_candidates(s.supports, resting, rest, turns, s.world_T_camera, s.intrinsics, pixels, furniture_);
+  // Scored on what the furniture and the other parts leave visible (its own stale pose hides
+  // nothing), first over a band as wide as half the grid's step: the candidates are that far
+  // apart. A candidate that shows too little of itself cannot be told from anything else.
+  const OcclusionMap map = occlusion_map(k);
+  auto score = [&](const Pose& T, int band, int stride = 2) {
+    const VisibleContrast v = visible_contrast(image, s.intrinsics, model, s.colors[k], T, map, k, 4, band, stride);
+    return v.visible >= options_.rest_visible_fraction * v.lines ? v.contrast : -2.0;
+  };
+  std::vector<std::pair<double, size_t>> scored;
+  for (size_t i = 0; i < candidates.size(); ++i)
+    if (const double v = score(candidates[i].camera_T_part, std::max(2, static_cast<int>(step / 8)), 4); v > -2.0)
+      scored.push_back({v, i});
+  std::sort(scored.begin(), scored.end(), [](auto& a, auto& b) { return a.first > b.first; });
+  // The best at distinct places or turns (a step apart in the image, or turned by more than an
+  // eighth: a box turned half round has nearly the same outline, and only the best fit of the
+  // two tells them apart), each moved along its support and turned while it then stands out
+  // more (steps halving down to 2 px): the grid is too coarse for the contour's lines to pull
+  // a candidate in from where it lies.
+  auto same_place = [](const RestingCandidate& a, const RestingCandidate& b, double px) {
+    return (a.pixel - b.pixel).norm() < px && std::abs(std::remainder(a.turn - b.turn, 2 * M_PI)) < M_PI / 4;
+  };
+  std::vector<RestingCandidate> picked;
+  for (const auto& [v, i] : scored) {
+    if (picked.size() >= static_cast<size_t>(std::max(options_.rest_search_climbs, 0))) break;
+    if (std::none_of(picked.begin(), picked.end(), [&](const RestingCandidate& p) { return same_place(p, candidates[i], step); }))
+      picked.push_back(candidates[i]);
+  }
+  for (auto& p : picked) {
+    for (double d = step / 2, a = M_PI / turns.size(); d >= 2.0; d /= 2, a /= 2) {
+      // Scored over a band as wide as the step: a finer one would not see the way from afar.
+      const int band = std::max(2, static_cast<int>(d / 4));
+      double best = score(p.camera_T_part, band);
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (const auto& [du, dv, dt] : {std::tuple{d, 0.0, 0.0}, {-d, 0.0, 0.0}, {0.0, d, 0.0}, {0.0, -d, 0.0}, {0.0, 0.0, a}, {0.0, 0.0, -a}}) {
+          RestingCandidate q = p;
+          q.pixel += Eigen::Vector2d(du, dv);
+          q.turn += dt;
+          const std::optional<Pose> T =
+              resting_pose(s.supports[q.level].height, resting, rest, q.turn, s.world_T_camera, s.intrinsics, q.pixel);
+          if (!T) continue;
+          if (const double v = score(*T, band); v > best) {
+            q.camera_T_part = *T;
+            p = q, best = v, moved = true;
+          }
+        }
+      }
+    }
+  }
+  // The best few of those, at distinct places, tracked from.
+  std::vector<std::pair<double, size_t>> climbed;
+  for (size_t i = 0; i < picked.size(); ++i) climbed.push_back({score(picked[i].camera_T_part, 2), i});
+  std::sort(climbed.begin(), climbed.end(), [](auto& a, auto& b) { return a.first > b.first; });
+  std::vector<RestingCandidate> tries;
+  for (const auto& [v, i] : climbed)
+    if (tries.size() < static_cast<size_t>(std::max(options_.rest_search_tries, 0)) &&
+        std::none_of(tries.begin(), tries.end(), [&](const RestingCandidate& q) { return same_place(picked[i], q, step / 2); }))
+      tries.push_back(picked[i]);
+  const Eigen::Vector3d part_up = rest.transpose().col(2);  // the part's axis that pointed up at rest
+  std::optional<RegionFrameResult> best;
+  for (const auto& t : tries) {
+    const Pose& candidate = t.camera_T_part;
+    // At the support's depth: it is a better cue than the silhouette's size, half hidden.
+    const RegionFrameResult r =
+        track_region(image, s.intrinsics, model, s.colors[k], candidate, map, k, options_.region, true);
+    const int visible = r.lines - r.hidden_lines;
+    if (visible < options_.rest_visible_fraction * r.lines || r.used_lines < options_.rest_used_fraction * visible ||
+        r.contrast < options_.rest_contrast * s.reference_contrast[k])
+      continue;
+    // Still standing on the support it was put on: not tilted off it, not lifted or sunk.
+    const Eigen::Matrix3d world_R = s.world_T_camera.linear() * r.camera_T_part.linear();
+    const double tilt = std::acos(std::clamp(part_up.dot(world_R.transpose().col(2)), -1.0, 1.0));
+    const double bottom = (s.world_T_camera * r.camera_T_part * model.centre()).z() -
+                          centre_height(models_[k].mesh, model.centre(), world_R);
+    const double support = (s.world_T_camera * candidate * model.centre()).z() - resting.lift;
+    if (tilt > options_.rest_tilt_deg * M_PI / 180 || std::abs(bottom - support) > options_.rest_height_tolerance) continue;
+    // The most evidence: edges found, and how clearly.
+    if (!best || r.used_lines * r.contrast > best->used_lines * best->contrast) best = r;
   }
   return best;
 }

@@ -6,9 +6,12 @@
 // furniture hides them where it stands in front), and a
 // part whose silhouette no longer stands out (a hand over it, out of the picture) keeps its last
 // pose, reported invalid, and is looked for around it in the next frames (a grid of shifts
-// across the view scored by contrast, the best tracked from). A part seen in the last two
-// frames is predicted to go on as it moved (a carry).
+// across the view scored by contrast, the best tracked from; then among the places on the
+// furniture where it could have been put down, support_search.h, judged on its visible lines).
+// A part found so is followed back into the frames it was missed in. A part seen in the last
+// two frames is predicted to go on as it moved (a carry).
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +25,7 @@
 #include "perception/tracking/contour_model.h"
 #include "perception/tracking/pose_tracker.h"
 #include "perception/tracking/region_pose.h"
+#include "perception/tracking/support_search.h"
 #include "perception/tracking/surface_flow.h"
 #include "perception/tracking/tracker_init.h"
 
@@ -51,6 +55,37 @@ struct ModelTrackerOptions {
   int search_tries = 3;
   double search_contrast = 0.9;   // of the running mean: a part found by the search
   double search_used_fraction = 0.5;  // of its lines finding an edge: a part found by the search
+  // A part still not found is looked for where it could have come to rest (a carried part is
+  // put down, often half behind the furniture, and the search at its last depth misses it):
+  // standing on one of the furniture's supports as at its last rest, turned about the vertical
+  // (support_search.h), its centre's image within `rest_search_radii` of its radii of where it
+  // was last seen; candidates scored by their contrast over the lines left visible, the best
+  // `rest_search_tries` tracked from (at the support's depth).
+  bool rest_search = true;
+  double rest_search_radii = 3.0;
+  int rest_search_turns = 12;           // over the whole turn, one of them the last seen turn
+  double rest_search_density = 4.0;     // grid points per radius
+  int rest_search_climbs = 12;          // best candidates moved and turned while they stand out more
+  int rest_search_tries = 4;            // of those, tracked from
+  int rest_search_every = 2;            // frames, while it stays lost (and in the frame after a find)
+  // Judged on the lines the furniture and the other parts leave visible, not on all of them (a
+  // part half hidden shows half its lines): enough of it shows, most of its visible lines find
+  // an edge, it stands out enough, it still rests on the support once tracked (within the
+  // height and tilt), and it is found at the same place as in the frame before (found or seen
+  // there: at rest, as a part held above a support does not stay put). Candidates whose core
+  // would be inside a furniture box (a wall) are not tried; of those that pass, the one with
+  // the most evidence (edges found times contrast) is taken.
+  double rest_visible_fraction = 0.3;   // of its lines visible
+  double rest_used_fraction = 0.75;     // of the visible lines finding an edge
+  double rest_contrast = 0.6;           // of the running mean: lower than search_contrast, as
+                                        // where it was put down may lie on another background
+  double rest_height_tolerance = 0.01;  // m above or into the support
+  double rest_tilt_deg = 10.0;          // of its up axis from the last rest's
+  double rest_confirm_mm = 10.0;        // between the two frames' finds
+  // A part found at rest after a gap is followed back into the gap through the last frames
+  // (kept while a part is not seen), as long as it is seen there: the end of the carry it was
+  // lost in (its last approach, hidden from the search while it still moved) dates the release.
+  int follow_back_frames = 15;
   double prediction = 0.8;        // of the last frame's motion across the view, carried on
   double rest_px = 1.0;           // a part whose centre's image moved less over 3 frames holds its depth
   double rest_hold_px = 2.0;      // a resting part's smaller moves (and turns) are not taken
@@ -83,7 +118,9 @@ public:
 
 private:
   struct State;
-  OcclusionMap occlusion_map() const;
+  // The furniture and the parts at their estimates; without part `skip` (>= 0), as where to look
+  // for a lost part its stale pose hides nothing.
+  OcclusionMap occlusion_map(int skip = -1) const;
   // Moves part k's start to where the start frame shows it (an operator's placement is a few
   // millimetres to centimetres off).
   void settle_start(const cv::Mat& image, size_t k);
@@ -95,6 +132,12 @@ private:
   bool passed_in_front(size_t k, const std::vector<bool>& moving) const;
   // Part k looked for around its last pose: the best of the tracked candidates.
   RegionFrameResult search(const cv::Mat& image, int k, const OcclusionMap& map) const;
+  // Part k looked for where it could have come to rest on the furniture (rest_search options);
+  // the best candidate that passes the rules that judge it on its visible lines, if any.
+  std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k) const;
+  // Part k, found at rest in `frame`, tracked back from there through the kept frames before it
+  // while it is seen (contrast `bar`), filling its samples there.
+  void follow_back(size_t k, int frame, double bar);
 
   std::vector<ModelPart> models_;
   std::vector<FurnitureMesh> furniture_;

@@ -239,6 +239,22 @@ TEST(ModelTracker, FollowsThePartsOfAVideoWithoutMarkers) {
   fs::remove_all(dir);
 }
 
+// A part tracked within 3 mm in frames 0-9, never reported under the board in frames 10-19:
+// the first frame from 20 on it is reported in again (-1: none).
+int found_after_the_board(const PoseTracks& tracks, const std::vector<Pose>& truth) {
+  EXPECT_EQ(tracks.frames, static_cast<int>(truth.size()));
+  for (int f = 0; f < 10; ++f) {
+    EXPECT_TRUE(tracks.samples[0][f].valid) << "frame " << f;
+    if (tracks.samples[0][f].valid) {
+      EXPECT_LT(error_mm(tracks.samples[0][f], truth[f]), 3.0) << "frame " << f;
+    }
+  }
+  for (int f = 10; f < 20; ++f) EXPECT_FALSE(tracks.samples[0][f].valid) << "frame " << f << " was seen under the board";
+  for (int f = 20; f < tracks.frames; ++f)
+    if (tracks.samples[0][f].valid) return f;
+  return -1;
+}
+
 // Hidden for 10 frames (a board right before the camera) while it is moved 8 cm: found again
 // where it now is, and never reported seen elsewhere meanwhile.
 TEST(ModelTracker, FindsAPartAgainAfterTenFramesFullyHidden) {
@@ -251,15 +267,7 @@ TEST(ModelTracker, FindsAPartAgainAfterTenFramesFullyHidden) {
   }
   const Clip clip = render_clip(truth, covered);
   const PoseTracks tracks = track_clip(clip, truth[0]);
-  ASSERT_EQ(tracks.frames, 36);
-  for (int f = 0; f < 10; ++f) {
-    ASSERT_TRUE(tracks.samples[0][f].valid) << "frame " << f;
-    EXPECT_LT(error_mm(tracks.samples[0][f], truth[f]), 3.0) << "frame " << f;
-  }
-  for (int f = 10; f < 20; ++f) EXPECT_FALSE(tracks.samples[0][f].valid) << "frame " << f << " was seen under the board";
-  int found = -1;
-  for (int f = 20; f < 36 && found < 0; ++f)
-    if (tracks.samples[0][f].valid) found = f;
+  const int found = found_after_the_board(tracks, truth);
   ASSERT_GE(found, 20) << "never found again";
   EXPECT_LE(found, 22);
   for (int f = found; f < 36; ++f) {
@@ -331,6 +339,103 @@ TEST(ModelTracker, AStartFiveCentimetresOffIsCorrected) {
       }
     }
   }
+}
+
+// A table seen from above and in front, a wall standing on it: the box is carried while a board
+// right before the camera hides everything (frames 10-19), and put down 22 cm away, turned by
+// 20 degrees, 44 % of its outline behind the wall. At its last depth the search cannot reach it
+// (nor accept it on half its outline); found on the table within 2 frames of the board
+// leaving, where it is, and only with the search among the places it could rest (rest_search).
+struct TableScene {
+  Clip clip;
+  std::vector<FurnitureMesh> furniture;
+  Pose world_T_camera = Pose::Identity();
+};
+
+Pose resting_box(double x, double y, double turn) {
+  Pose p = Pose::Identity();
+  p.linear() = Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  p.translation() << x, y, kBox.z() / 2;  // standing on the table's top (z = 0)
+  return p;
+}
+
+TableScene render_table_scene(const std::vector<Pose>& truth, const std::vector<bool>& covered) {
+  TableScene t;
+  // The camera 0.6 m up, 0.6 m in front of the table's centre, looking down at it by 45 degrees.
+  const Eigen::Vector3d forward = Eigen::Vector3d(0, 1, -1).normalized(), right(1, 0, 0);
+  t.world_T_camera.linear().col(0) = right;
+  t.world_T_camera.linear().col(1) = forward.cross(right);
+  t.world_T_camera.linear().col(2) = forward;
+  t.world_T_camera.translation() << 0, -0.6, 0.6;
+  FurnitureMesh table{box_mesh({1.2, 1.2, 0.04}, {70, 100, 120}), Pose::Identity(), Pose::Identity(), "table",
+                      Eigen::Vector3d(1.2, 1.2, 0.04)};
+  table.world_T_mesh.translation() << 0, 0, -0.02;
+  FurnitureMesh wall{box_mesh({0.3, 0.04, 0.3}, {150, 150, 150}), Pose::Identity(), Pose::Identity(), "",
+                     Eigen::Vector3d(0.3, 0.04, 0.3)};
+  wall.world_T_mesh.translation() << 0.25, -0.1, 0.15;  // its left edge at x = 0.10: half the box behind it
+  t.furniture = {table, wall};
+  t.clip.truth = truth;
+  const RenderMesh box = box_mesh(kBox, {40, 40, 200}), board = box_mesh({0.4, 0.4, 0.01}, {128, 128, 128});
+  Pose board_pose = Pose::Identity();
+  board_pose.translation() << 0.0, 0.0, 0.3;
+  for (size_t f = 0; f < truth.size(); ++f) {
+    Rasterizer r(t.clip.size, t.clip.K.fx, t.clip.K.fy, t.clip.K.cx, t.clip.K.cy, t.world_T_camera);
+    r.clear({180, 160, 150}, {120, 110, 100});
+    for (const auto& m : t.furniture) r.draw(m.mesh, m.world_T_mesh);
+    r.draw(box, truth[f]);
+    if (covered[f]) r.draw(board, t.world_T_camera * board_pose);
+    t.clip.frames.push_back(r.color().clone());
+  }
+  return t;
+}
+
+PoseTracks track_table_scene(const TableScene& t, ModelTrackerOptions o = {}) {
+  TrackerInit init;
+  init.parts.push_back({"box", t.clip.truth[0]});
+  o.contour.views = 300;
+  ModelPoseTracker tracker({{"box", true, box_mesh(kBox, {40, 40, 200})}}, init, "init.json", t.furniture, o);
+  Camera c = t.clip.camera();
+  c.world_T_camera = t.world_T_camera;
+  tracker.start({c, 30.0, static_cast<int>(t.clip.frames.size())});
+  for (size_t f = 0; f < t.clip.frames.size(); ++f) tracker.track(static_cast<int>(f), t.clip.frames[f]);
+  return tracker.finish();
+}
+
+TEST(ModelTracker, FindsAPartPutDownHalfBehindAWall) {
+  std::vector<Pose> truth;
+  std::vector<bool> covered;
+  for (int f = 0; f < 36; ++f) {
+    // Lifted 5 cm, carried 22 cm to the right and turned while the board is up, set down at 18.
+    const double s = std::clamp((f - 10) / 8.0, 0.0, 1.0);
+    Pose p = resting_box(-0.12 + 0.22 * s, 0.0, 0.35 * s);
+    p.translation().z() += 0.05 * std::sin(M_PI * s);
+    truth.push_back(p);
+    covered.push_back(f >= 10 && f < 20);
+  }
+  const TableScene scene = render_table_scene(truth, covered);
+  const PoseTracks tracks = track_table_scene(scene);
+  const int found = found_after_the_board(tracks, truth);
+  ASSERT_GE(found, 20) << "never found again";
+  EXPECT_LE(found, 22);
+  // Reported where it is from then on. (Once at rest there, more than 40 % of its lines hidden,
+  // it is held and no longer measured: rest_hidden_fraction.)
+  int reported = 0;
+  for (int f = found; f < 36; ++f) {
+    if (!tracks.samples[0][f].valid) continue;
+    ++reported;
+    EXPECT_LT(error_mm(tracks.samples[0][f], truth[f]), 8.0) << "frame " << f;
+    // (The plain box turned half round about the vertical looks the same.)
+    const Eigen::Matrix3d error = truth[f].linear().transpose() * tracks.samples[0][f].pose.linear();
+    const double turn = std::min(Eigen::AngleAxisd(error).angle(),
+                                 Eigen::AngleAxisd(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ()) * error).angle());
+    EXPECT_LT(turn * 180 / M_PI, 4.0) << "frame " << f;
+  }
+  EXPECT_GE(reported, 3);
+  // Without the search among the places it could rest, it stays lost.
+  ModelTrackerOptions without;
+  without.rest_search = false;
+  const PoseTracks lost = track_table_scene(scene, without);
+  for (int f = 20; f < 36; ++f) EXPECT_FALSE(lost.samples[0][f].valid) << "frame " << f << " found without the rest search";
 }
 
 // A start that puts a part behind the camera or beside the picture is refused, naming the part.
