@@ -1,6 +1,7 @@
 // demoplan-cli: the headless entry point to every job of demoplan. The commands that read or
 // write video and images run in demoplan-cli-video (video_commands.h), started from here.
 #include "app/cli/command.h"
+#include "core/model/mesh_store.h"
 #include "core/scene/bvh_cache.h"
 #include "core/scene/fitted_mesh_store.h"
 #include "app/cli/video_commands.h"
@@ -8,7 +9,9 @@
 int main(int argc, char** argv) {
   using namespace demoplan::cli;
   if (argc > 1 && is_video_command(argv[1])) return run_in_video_executable(argv);
-  // Fitted meshes from earlier runs (bvh_cache.h): a scene loads without fitting.
+  // Meshes parsed and fitted in earlier runs (mesh_store.h, bvh_cache.h): a scene loads
+  // without parsing its mesh files or fitting them.
+  demoplan::set_mesh_store_folder(demoplan::default_mesh_store_folder());
   demoplan::set_fitted_mesh_folder(demoplan::default_fitted_mesh_folder());
   CLI::App app{"demoplan: teach a robot cell a task from one video", "demoplan-cli"};
   std::vector<Command> commands{register_check_command(app), register_graph_command(app),

@@ -12,6 +12,7 @@
 #include <cstdio>
 
 #include "app/common/data_dir.h"
+#include "core/model/mesh_store.h"
 #include "core/scene/bvh_cache.h"
 #include "core/scene/fitted_mesh_store.h"
 #include "ui/document/document.h"
@@ -63,7 +64,9 @@ int main(int argc, char** argv) {
   QSurfaceFormat::setDefaultFormat(format);
 
   QApplication app(argc, argv);
-  // Fitted meshes from earlier runs (bvh_cache.h): a scene loads without fitting.
+  // Meshes parsed and fitted in earlier runs (mesh_store.h, bvh_cache.h): a scene loads
+  // without parsing its mesh files or fitting them.
+  demoplan::set_mesh_store_folder(demoplan::default_mesh_store_folder());
   demoplan::set_fitted_mesh_folder(demoplan::default_fitted_mesh_folder());
   QApplication::setOrganizationName(QStringLiteral("demoplan"));
   QApplication::setApplicationName(QStringLiteral("demoplan"));

@@ -1,12 +1,15 @@
 #include "core/model/mesh.h"
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/model/mesh_store.h"
 
 namespace demoplan {
 
@@ -48,7 +51,8 @@ void append_node(const aiScene* scene, const aiNode* node, const aiMatrix4x4& pa
   for (unsigned c = 0; c < node->mNumChildren; ++c) append_node(scene, node->mChildren[c], T, out);
 }
 
-void read_material(const aiScene* scene, const std::filesystem::path& dir, TriangleMesh& out) {
+// `looked_at`: the texture file it looked for, if any.
+void read_material(const aiScene* scene, const std::filesystem::path& dir, TriangleMesh& out, std::string& looked_at) {
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
     const aiMaterial* mat = scene->mMaterials[scene->mMeshes[m]->mMaterialIndex];
     aiColor4D c;
@@ -56,17 +60,37 @@ void read_material(const aiScene* scene, const std::filesystem::path& dir, Trian
     aiString tex;
     if (mat->GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS) {
       const auto p = dir / tex.C_Str();
+      looked_at = p.string();
       if (std::filesystem::exists(p)) out.texture_path = p.string();
     }
     return;
   }
 }
 
-}  // namespace
+// assimp's own file access, each file it opens or asks about noted: what a mesh was read from.
+class NotingIOSystem final : public Assimp::DefaultIOSystem {
+public:
+  bool Exists(const char* file) const override {
+    note(file);
+    return DefaultIOSystem::Exists(file);
+  }
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    note(file);
+    return DefaultIOSystem::Open(file, mode);
+  }
+  const std::vector<std::string>& files() const { return files_; }
 
-std::shared_ptr<const TriangleMesh> load_mesh(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw InputError(path, "", "mesh file not found");
+private:
+  void note(const char* file) const {
+    if (std::find(files_.begin(), files_.end(), file) == files_.end()) files_.emplace_back(file);
+  }
+  mutable std::vector<std::string> files_;
+};
+
+std::shared_ptr<const TriangleMesh> parse_mesh(const std::string& path, std::vector<std::string>* sources) {
   Assimp::Importer importer;
+  auto* io = new NotingIOSystem;  // the importer owns it
+  importer.SetIOHandler(io);
   // URDF meshes are expressed in the link frame: do not let the Collada reader re-orient them.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   const aiScene* scene = importer.ReadFile(
@@ -80,7 +104,27 @@ std::shared_ptr<const TriangleMesh> load_mesh(const std::string& path) {
   if (mesh->triangles.empty()) throw InputError(path, "", "mesh has no triangles");
   if (mesh->normals.size() != mesh->vertices.size()) mesh->normals.clear();
   if (mesh->uvs.size() != mesh->vertices.size()) mesh->uvs.clear();
-  read_material(scene, std::filesystem::path(path).parent_path(), *mesh);
+  std::string texture;
+  read_material(scene, std::filesystem::path(path).parent_path(), *mesh, texture);
+  if (sources) {
+    *sources = io->files();
+    if (!texture.empty()) sources->push_back(texture);
+  }
+  return mesh;
+}
+
+}  // namespace
+
+std::shared_ptr<const TriangleMesh> load_mesh(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw InputError(path, "", "mesh file not found");
+  const std::string folder = mesh_store_folder();
+  if (folder.empty()) return parse_mesh(path, nullptr);
+  if (auto stored = read_stored_mesh(folder, path)) return stored;
+  std::vector<std::string> files;
+  auto mesh = parse_mesh(path, &files);
+  std::vector<MeshSource> sources;
+  for (const auto& f : files) sources.push_back(mesh_source(f));
+  store_mesh(folder, *mesh, sources);
   return mesh;
 }
 

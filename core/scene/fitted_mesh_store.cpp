@@ -3,14 +3,12 @@
 #include <fcl/config.h>
 #include <fcl/geometry/bvh/detail/BV_fitter.h>
 
-#include <algorithm>
-#include <bit>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 #include "core/io/atomic_file.h"
+#include "core/io/binary_file.h"
 #include "core/io/user_cache.h"
 
 namespace demoplan {
@@ -71,53 +69,24 @@ private:
   size_t next_ = 0;
 };
 
-// FNV-1a over 8-byte words (then the last bytes): a file of tens of megabytes is checked in
-// milliseconds, where a byte at a time took a tenth of a second.
-std::uint64_t fnv(const void* data, size_t bytes, std::uint64_t h = 0xcbf29ce484222325ull) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  size_t i = 0;
-  for (; i + 8 <= bytes; i += 8) {
-    std::uint64_t word;
-    std::memcpy(&word, p + i, 8);
-    h = (h ^ word) * 0x100000001b3ull;
-    h ^= h >> 29;
-  }
-  for (; i < bytes; ++i) h = (h ^ p[i]) * 0x100000001b3ull;
-  return h;
-}
-
-template <typename T>
-void put(std::string& out, const T& value) {
-  out.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
 void put_sphere(std::string& out, const BoundingSphere& s) {
-  put(out, s.centre);
-  put(out, s.radius);
+  put_bytes(out, s.centre);
+  put_bytes(out, s.radius);
 }
 
 template <typename T, typename PutOne>
 void put_list(std::string& out, const std::vector<T>& list, PutOne put_one) {
-  put(out, static_cast<std::uint64_t>(list.size()));
+  put_bytes(out, static_cast<std::uint64_t>(list.size()));
   for (const auto& x : list) put_one(out, x);
 }
 
-// Reads from a byte range; every read is checked against its end.
-struct Reader {
-  const char* at;
-  const char* end;
-  template <typename T>
-  bool get(T& value) {
-    if (static_cast<size_t>(end - at) < sizeof value) return false;
-    std::memcpy(&value, at, sizeof value);
-    at += sizeof value;
-    return true;
-  }
+// ByteReader with the lists of a sphere set: each item read by `get_one`.
+struct Reader : ByteReader {
   bool get_sphere(BoundingSphere& s) { return get(s.centre) && get(s.radius); }
   template <typename T, typename GetOne>
   bool get_list(std::vector<T>& list, size_t item_bytes, GetOne get_one) {
     std::uint64_t n = 0;
-    if (!get(n) || n > static_cast<std::uint64_t>(end - at) / item_bytes) return false;
+    if (!get(n) || n > left() / item_bytes) return false;
     list.resize(n);
     for (auto& x : list)
       if (!get_one(*this, x)) return false;
@@ -134,27 +103,27 @@ std::string file_of(const std::string& folder, const MeshKey& key) {
 
 std::string payload_of(const FittedMesh& m) {
   std::string p;
-  put(p, static_cast<std::uint64_t>(m.tree.counts.size()));
+  put_bytes(p, static_cast<std::uint64_t>(m.tree.counts.size()));
   for (size_t i = 0; i < m.tree.counts.size(); ++i) {
     const fcl::OBBRSSd& bv = m.tree.volumes[i];
-    put(p, static_cast<std::int32_t>(m.tree.counts[i]));
-    put(p, bv.obb.axis), put(p, bv.obb.To), put(p, bv.obb.extent);
-    put(p, bv.rss.axis), put(p, bv.rss.To), put(p, bv.rss.l), put(p, bv.rss.r);
+    put_bytes(p, static_cast<std::int32_t>(m.tree.counts[i]));
+    put_bytes(p, bv.obb.axis), put_bytes(p, bv.obb.To), put_bytes(p, bv.obb.extent);
+    put_bytes(p, bv.rss.axis), put_bytes(p, bv.rss.To), put_bytes(p, bv.rss.l), put_bytes(p, bv.rss.r);
   }
   const SphereSet& s = m.spheres;
   put_sphere(p, s.all);
   put_list(p, s.parts, put_sphere);
   put_list(p, s.children, put_sphere);
-  put_list(p, s.children_begin, [](std::string& o, int v) { put(o, static_cast<std::int32_t>(v)); });
-  put_list(p, s.witnesses, [](std::string& o, const Eigen::Vector3d& v) { put(o, v); });
-  put_list(p, s.edges, [](std::string& o, const std::array<Eigen::Vector3d, 2>& e) { put(o, e[0]), put(o, e[1]); });
+  put_list(p, s.children_begin, [](std::string& o, int v) { put_bytes(o, static_cast<std::int32_t>(v)); });
+  put_list(p, s.witnesses, [](std::string& o, const Eigen::Vector3d& v) { put_bytes(o, v); });
+  put_list(p, s.edges, [](std::string& o, const std::array<Eigen::Vector3d, 2>& e) { put_bytes(o, e[0]), put_bytes(o, e[1]); });
   return p;
 }
 
 bool parse_payload(Reader r, FittedMesh& m) {
   std::uint64_t nodes = 0;
   constexpr size_t kNodeBytes = sizeof(std::int32_t) + 30 * sizeof(double);
-  if (!r.get(nodes) || nodes > static_cast<std::uint64_t>(r.end - r.at) / kNodeBytes) return false;
+  if (!r.get(nodes) || nodes > r.left() / kNodeBytes) return false;
   m.tree.counts.resize(nodes);
   m.tree.volumes.resize(nodes);
   for (size_t i = 0; i < nodes; ++i) {
@@ -194,10 +163,10 @@ MeshKey mesh_key(const std::vector<Eigen::Vector3d>& vertices, const std::vector
   k.triangles = triangles.size();
   const size_t vb = vertices.size() * sizeof(Eigen::Vector3d), tb = triangles.size() * sizeof(triangles[0]);
   static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double));
-  k.hash_a = fnv(triangles.data(), tb, fnv(vertices.data(), vb));
+  k.hash_a = hash_bytes(triangles.data(), tb, hash_bytes(vertices.data(), vb));
   // The second over the same bytes in another order and from another start: independent enough
   // that a file of another mesh answering to both is not a concern.
-  k.hash_b = fnv(vertices.data(), vb, fnv(triangles.data(), tb, 0x84222325cbf29ce4ull ^ (k.vertices << 20) ^ k.triangles));
+  k.hash_b = hash_bytes(vertices.data(), vb, hash_bytes(triangles.data(), tb, 0x84222325cbf29ce4ull ^ (k.vertices << 20) ^ k.triangles));
   return k;
 }
 
@@ -230,12 +199,9 @@ std::shared_ptr<Tree> build_obbrss_tree(const std::vector<Eigen::Vector3d>& vert
 
 std::optional<FittedMesh> read_fitted_mesh(const std::string& folder, const MeshKey& key) {
   if (folder.empty()) return std::nullopt;
-  std::ifstream in(file_of(folder, key), std::ios::binary | std::ios::ate);
-  if (!in) return std::nullopt;
-  std::string bytes(static_cast<size_t>(std::max<std::streamoff>(0, in.tellg())), '\0');
-  in.seekg(0);
-  if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) return std::nullopt;
-  Reader r{bytes.data(), bytes.data() + bytes.size()};
+  std::string bytes;
+  if (!read_whole_file(file_of(folder, key), bytes)) return std::nullopt;
+  Reader r{{bytes.data(), bytes.data() + bytes.size()}};
   char magic[8], fcl_version[16];
   std::uint32_t version = 0;
   MeshKey stored;
@@ -243,7 +209,7 @@ std::optional<FittedMesh> read_fitted_mesh(const std::string& folder, const Mesh
   if (!r.get(magic) || std::memcmp(magic, kMagic, sizeof magic) != 0 || !r.get(version) || version != kVersion ||
       !r.get(fcl_version) || std::memcmp(fcl_version, kFclVersion, sizeof fcl_version) != 0 || !r.get(stored) ||
       std::memcmp(&stored, &key, sizeof key) != 0 || !r.get(payload_bytes) || !r.get(checksum) ||
-      payload_bytes != static_cast<std::uint64_t>(r.end - r.at) || fnv(r.at, payload_bytes) != checksum)
+      payload_bytes != r.left() || hash_bytes(r.at, payload_bytes) != checksum)
     return std::nullopt;
   FittedMesh m;
   if (!parse_payload(r, m)) return std::nullopt;
@@ -254,11 +220,11 @@ void write_fitted_mesh(const std::string& folder, const MeshKey& key, const Fitt
   if (folder.empty()) return;
   const std::string payload = payload_of(mesh);
   std::string bytes(kMagic, sizeof kMagic);
-  put(bytes, kVersion);
-  put(bytes, kFclVersion);
-  put(bytes, key);
-  put(bytes, static_cast<std::uint64_t>(payload.size()));
-  put(bytes, fnv(payload.data(), payload.size()));
+  put_bytes(bytes, kVersion);
+  put_bytes(bytes, kFclVersion);
+  put_bytes(bytes, key);
+  put_bytes(bytes, static_cast<std::uint64_t>(payload.size()));
+  put_bytes(bytes, hash_bytes(payload.data(), payload.size()));
   bytes += payload;
   try {
     std::error_code ec;
