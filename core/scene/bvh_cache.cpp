@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <exception>
@@ -29,6 +28,7 @@ struct FitInput {
   std::vector<fcl::Vector3d> vertices;
   std::vector<fcl::Triangle> triangles;
   const std::vector<std::array<std::uint32_t, 3>>* mesh_triangles = nullptr;  // the same, for the spheres
+  MeshKey key;  // of the content: the cache's and the folder's
 };
 
 FitInput scaled(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
@@ -37,22 +37,8 @@ FitInput scaled(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
   in.vertices = scaled_vertices(mesh, scale);
   in.triangles.reserve(mesh.triangles.size());
   for (const auto& t : mesh.triangles) in.triangles.emplace_back(t[0], t[1], t[2]);
+  in.key = mesh_key(in.vertices, mesh.triangles);
   return in;
-}
-
-std::uint64_t content_hash(const FitInput& in) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  auto mix = [&h](std::uint64_t w) {
-    h ^= w + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-    h *= 0x100000001b3ull;
-  };
-  mix(in.vertices.size());
-  mix(in.triangles.size());
-  for (const auto& v : in.vertices)
-    for (int i = 0; i < 3; ++i) mix(std::bit_cast<std::uint64_t>(v[i]));
-  for (const auto& t : in.triangles)
-    for (int i = 0; i < 3; ++i) mix(t[i]);
-  return h;
 }
 
 // Bit for bit, like the hash: the hash only finds candidates, this decides.
@@ -84,10 +70,9 @@ std::string fitted_mesh_folder() {
 // From the folder of fitted meshes when it holds this one, else fitted (and stored there).
 SharedMesh fit(const FitInput& in) {
   const std::string folder = fitted_mesh_folder();
-  const MeshKey key = folder.empty() ? MeshKey{} : mesh_key(in.vertices, *in.mesh_triangles);
   std::shared_ptr<Bvh> bvh;
   std::shared_ptr<const SphereSet> spheres;
-  if (auto stored = read_fitted_mesh(folder, key)) {
+  if (auto stored = read_fitted_mesh(folder, in.key)) {
     bvh = build_obbrss_tree(in.vertices, *in.mesh_triangles, &stored->tree);
     if (bvh) {
       spheres = std::make_shared<const SphereSet>(std::move(stored->spheres));
@@ -99,7 +84,7 @@ SharedMesh fit(const FitInput& in) {
     bvh = build_obbrss_tree(in.vertices, *in.mesh_triangles, nullptr, folder.empty() ? nullptr : &record);
     spheres = std::make_shared<const SphereSet>(fit_bounding_spheres(in.vertices, *in.mesh_triangles));
     ++fit_count;
-    write_fitted_mesh(folder, key, {std::move(record), *spheres});
+    write_fitted_mesh(folder, in.key, {std::move(record), *spheres});
   }
   // The constructor computes the geometry's local AABB: here, before any other thread sees it.
   auto object = std::make_shared<const fcl::CollisionObjectd>(bvh);
@@ -112,7 +97,7 @@ struct Entry {
 
 struct Cache {
   std::mutex mutex;
-  std::unordered_multimap<std::uint64_t, std::shared_ptr<Entry>> entries;  // by content_hash
+  std::unordered_multimap<std::uint64_t, std::shared_ptr<Entry>> entries;  // by MeshKey::hash_a
 };
 
 Cache& cache() {
@@ -138,15 +123,16 @@ std::optional<SharedMesh> fitted_among(const std::vector<std::shared_ptr<Entry>>
   return std::nullopt;
 }
 
-std::optional<SharedMesh> find_fitted(const FitInput& in, std::uint64_t hash) {
+std::optional<SharedMesh> find_fitted(const FitInput& in) {
   try {
-    return fitted_among(entries_of(hash), in);
+    return fitted_among(entries_of(in.key.hash_a), in);
   } catch (...) {  // a fit of the same hash failed in another thread: fit here, which raises it again
     return std::nullopt;
   }
 }
 
-SharedMesh find_or_fit(const FitInput& in, std::uint64_t hash) {
+SharedMesh find_or_fit(const FitInput& in) {
+  const std::uint64_t hash = in.key.hash_a;
   Cache& c = cache();
   const std::vector<std::shared_ptr<Entry>> candidates = entries_of(hash);
   if (auto hit = fitted_among(candidates, in)) return *hit;
@@ -163,7 +149,7 @@ SharedMesh find_or_fit(const FitInput& in, std::uint64_t hash) {
   }
   // Another thread entered this hash since the look-up: it may be this mesh, so wait for it
   // rather than fit twice.
-  if (entered_meanwhile) return find_or_fit(in, hash);
+  if (entered_meanwhile) return find_or_fit(in);
 
   try {
     SharedMesh o = fit(in);
@@ -187,8 +173,7 @@ SharedMesh find_or_fit(const FitInput& in, std::uint64_t hash) {
 }  // namespace
 
 SharedMesh shared_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
-  const FitInput in = scaled(mesh, scale);
-  return find_or_fit(in, content_hash(in));
+  return find_or_fit(scaled(mesh, scale));
 }
 
 std::shared_ptr<const fcl::CollisionObjectd> shared_mesh_bvh(const TriangleMesh& mesh,
@@ -200,12 +185,10 @@ std::vector<SharedMesh> shared_meshes(const std::vector<std::pair<const Triangle
                                       int threads) {
   std::vector<SharedMesh> out(meshes.size());
   std::vector<FitInput> inputs(meshes.size());
-  std::vector<std::uint64_t> hashes(meshes.size());
   std::vector<size_t> misses;
   for (size_t i = 0; i < meshes.size(); ++i) {
     inputs[i] = scaled(*meshes[i].first, meshes[i].second);
-    hashes[i] = content_hash(inputs[i]);
-    if (auto hit = find_fitted(inputs[i], hashes[i])) out[i] = std::move(*hit);
+    if (auto hit = find_fitted(inputs[i])) out[i] = std::move(*hit);
     else misses.push_back(i);
   }
   std::stable_sort(misses.begin(), misses.end(),
@@ -214,7 +197,7 @@ std::vector<SharedMesh> shared_meshes(const std::vector<std::pair<const Triangle
   parallel_for(misses.size(), threads, [&](size_t k) {
     const size_t i = misses[k];
     try {
-      out[i] = find_or_fit(inputs[i], hashes[i]);
+      out[i] = find_or_fit(inputs[i]);
     } catch (...) {  // never out of a worker thread
       errors[i] = std::current_exception();
     }

@@ -2,10 +2,9 @@
 
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "core/io/atomic_file.h"
+#include "core/io/binary_file.h"
 #include "core/io/user_cache.h"
 
 namespace demoplan::perception {
@@ -15,12 +14,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr char kMagic[8] = {'D', 'P', 'C', 'O', 'N', 'T', 'R', '1'};
-constexpr std::uint64_t kFnvOffset = 14695981039346656037ull, kFnvPrime = 1099511628211ull;
-
-void mix(std::uint64_t& h, const void* data, size_t bytes) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * kFnvPrime;
-}
 
 std::string file_of(const std::string& folder, std::uint64_t key) {
   char name[32];
@@ -28,46 +21,36 @@ std::string file_of(const std::string& folder, std::uint64_t key) {
   return (fs::path(folder) / name).string();
 }
 
-template <typename T>
-void put(std::string& out, const T& value) {
-  out.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-template <typename T>
-bool get(std::istream& in, T& value) {
-  return static_cast<bool>(in.read(reinterpret_cast<char*>(&value), sizeof value));
-}
-
 }  // namespace
 
 std::uint64_t contour_model_key(const RenderMesh& mesh, const ContourModelOptions& o) {
-  std::uint64_t h = kFnvOffset;
-  mix(h, kMagic, sizeof kMagic);
-  mix(h, mesh.vertices.data(), mesh.vertices.size() * sizeof(mesh.vertices[0]));
-  mix(h, mesh.triangles.data(), mesh.triangles.size() * sizeof(mesh.triangles[0]));
+  std::uint64_t h = hash_bytes(kMagic, sizeof kMagic);
+  h = hash_bytes(mesh.vertices.data(), mesh.vertices.size() * sizeof(mesh.vertices[0]), h);
+  h = hash_bytes(mesh.triangles.data(), mesh.triangles.size() * sizeof(mesh.triangles[0]), h);
   const int options[3] = {o.views, o.points, o.image_size};
-  mix(h, options, sizeof options);
-  return h;
+  return hash_bytes(options, sizeof options, h);
 }
 
 std::optional<ContourModel> read_contour_model(const std::string& folder, std::uint64_t key) {
   if (folder.empty()) return std::nullopt;
-  std::ifstream in(file_of(folder, key), std::ios::binary);
+  std::string bytes;
+  if (!read_whole_file(file_of(folder, key), bytes)) return std::nullopt;
+  ByteReader in{bytes.data(), bytes.data() + bytes.size()};
   char magic[8];
   std::uint64_t stored = 0;
   std::uint32_t views = 0;
   Eigen::Vector3d centre;
   double radius = 0;
-  if (!in.read(magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof magic) != 0 || !get(in, stored) ||
-      stored != key || !get(in, centre) || !get(in, radius) || !get(in, views) || views > 100000)
+  if (!in.get(magic) || std::memcmp(magic, kMagic, sizeof magic) != 0 || !in.get(stored) || stored != key ||
+      !in.get(centre) || !in.get(radius) || !in.get(views) || views > 100000)
     return std::nullopt;
   std::vector<ContourView> out(views);
   for (auto& v : out) {
     std::uint32_t points = 0;
-    if (!get(in, v.direction) || !get(in, points) || points > 100000) return std::nullopt;
+    if (!in.get(v.direction) || !in.get(points) || points > 100000) return std::nullopt;
     v.points.resize(points);
     for (auto& p : v.points)
-      if (!get(in, p.position) || !get(in, p.normal) || !get(in, p.inner) || !get(in, p.outer)) return std::nullopt;
+      if (!in.get(p.position) || !in.get(p.normal) || !in.get(p.inner) || !in.get(p.outer)) return std::nullopt;
   }
   return ContourModel(std::move(out), centre, radius);
 }
@@ -75,14 +58,14 @@ std::optional<ContourModel> read_contour_model(const std::string& folder, std::u
 void write_contour_model(const std::string& folder, std::uint64_t key, const ContourModel& model) {
   if (folder.empty()) return;
   std::string bytes(kMagic, sizeof kMagic);
-  put(bytes, key);
-  put(bytes, model.centre());
-  put(bytes, model.radius());
-  put(bytes, static_cast<std::uint32_t>(model.views().size()));
+  put_bytes(bytes, key);
+  put_bytes(bytes, model.centre());
+  put_bytes(bytes, model.radius());
+  put_bytes(bytes, static_cast<std::uint32_t>(model.views().size()));
   for (const auto& v : model.views()) {
-    put(bytes, v.direction);
-    put(bytes, static_cast<std::uint32_t>(v.points.size()));
-    for (const auto& p : v.points) put(bytes, p.position), put(bytes, p.normal), put(bytes, p.inner), put(bytes, p.outer);
+    put_bytes(bytes, v.direction);
+    put_bytes(bytes, static_cast<std::uint32_t>(v.points.size()));
+    for (const auto& p : v.points) put_bytes(bytes, p.position), put_bytes(bytes, p.normal), put_bytes(bytes, p.inner), put_bytes(bytes, p.outer);
   }
   try {
     std::error_code ec;

@@ -11,7 +11,7 @@
 
 namespace demoplan::perception {
 
-// FNV-1a over the mesh's vertices and triangles, the options and the file format's version.
+// A hash (hash_bytes) of the mesh's vertices and triangles, the options and the file format's version.
 std::uint64_t contour_model_key(const RenderMesh& mesh, const ContourModelOptions& options);
 
 // `folder`/<key in hex>.contours; nullopt when it is missing, unreadable or not for this key.
