@@ -9,12 +9,14 @@
 #include <limits>
 #include <set>
 #include <thread>
+#include <unordered_map>
 
 #include "core/error.h"
 #include "core/scene/bvh_cache.h"
 #include "core/scene/fcl_object.h"
 #include "core/scene/geometry_bounds.h"
 #include "core/scene/joint_pair_table.h"
+#include "core/scene/mesh_contact_witness.h"
 
 namespace demoplan {
 
@@ -56,6 +58,7 @@ struct GeomInfo {
   int child_offset = 0;  // children's centres, in the same array's children counterpart
   int part_offset = 0;   // moving geometries: into Workspace::child_placed
   int slot = -1;
+  int uid = -1;  // unique over robot, object and furniture geometries: keys a pair's witnesses
 };
 
 struct Prototype {
@@ -101,6 +104,10 @@ struct CollisionData::Workspace {
   std::vector<std::uint64_t> parts_placed;  // per slot: the same for the parts' centres
   std::vector<std::uint64_t> child_placed;  // per part of every geometry: the same for its children
   std::uint64_t query = 0;
+
+  // Mesh-mesh pairs FCL found touching: triangle pairs that may prove the next contact
+  // (mesh_contact_witness.h), keyed by the pair's GeomInfo::uid.
+  std::unordered_map<std::uint64_t, MeshContactWitnesses> witnesses;
 };
 
 CollisionData::CollisionData() = default;
@@ -147,9 +154,19 @@ struct CollisionChecker::Impl {
         if (certainly_separated(pa, pb) || (table && table->certainly_free(*q))) return;
         touch = certainly_touching(pa, pb);
       }
+      MeshContactWitnesses* witnesses = nullptr;
+      if (!touch && impl->options.fast_path && ia.bound.kind == GeometryBound::Kind::Mesh &&
+          ib.bound.kind == GeometryBound::Kind::Mesh) {
+        witnesses = &data->witnesses[(std::uint64_t(ia.uid) << 32) | std::uint32_t(ib.uid)];
+        touch = witnesses->prove(a, b);
+      }
       if (!touch) {
         data->result.clear();
         if (fcl::collide(&a, &b, data->request, data->result) == 0) return;
+        if (witnesses && data->result.numContacts() > 0) {
+          const fcl::Contactd& c = data->result.getContact(0);
+          if (c.o1 == a.collisionGeometry().get()) witnesses->learn(a, c.b1, b, c.b2);
+        }
       }
       CollisionPair p{ia.name, ib.name};
       if (!hit) first = p;
@@ -400,6 +417,9 @@ CollisionChecker::CollisionChecker(const Scene& scene, CollisionOptions options)
       impl_->moving_children += info.bound.child_count();
       impl_->moving_parts += info.bound.part_count();
     }
+  int uid = 0;
+  for (auto* list : {&impl_->robot, &impl_->objects, &impl_->furniture})
+    for (auto& info : *list) info.uid = uid++;
   for (auto& info : impl_->furniture) {
     info.centre_offset = static_cast<int>(impl_->furniture_centres.size());
     info.child_offset = static_cast<int>(impl_->furniture_children.size());

@@ -5,11 +5,13 @@
 // geometry (robot links, objects) queries it. Moving-vs-moving pairs are listed once at
 // construction and pruned per query by their world AABBs before the narrow phase. Each pair
 // left is first tested on cheap exact bounds (CollisionOptions::fast_path): bounding spheres or
-// the exact primitive, a self pair's distance table (joint_pair_table.h), and a corner or an
-// edge of one body inside the other primitive; it goes to FCL's narrow phase only when they
-// cannot decide.
+// the exact primitive, a self pair's distance table (joint_pair_table.h), a corner or an edge
+// of one body inside the other primitive, and for two meshes a pair of their triangles FCL
+// found crossing at a nearby pose (mesh_contact_witness.h); it goes to FCL's narrow phase only
+// when they cannot decide.
 // The checker is immutable after construction, but for the self pairs' distance tables, filled
-// on demand by any thread; each thread passes its own CollisionData.
+// on demand by any thread; each thread passes its own CollisionData (which keeps the triangle
+// pairs).
 #include <Eigen/Core>
 #include <memory>
 #include <string>

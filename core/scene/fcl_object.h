@@ -5,11 +5,7 @@
 #include <memory>
 
 #include "core/model/robot_model.h"
-
-namespace fcl {
-template <typename S>
-class CollisionObject;
-}  // namespace fcl
+#include "core/scene/fcl_forward.h"
 
 namespace demoplan {
 

@@ -20,11 +20,7 @@
 #include "core/geometry/se3.h"
 #include "core/model/robot_model.h"
 #include "core/scene/geometry_bounds.h"
-
-namespace fcl {
-template <typename S>
-class CollisionObject;
-}  // namespace fcl
+#include "core/scene/fcl_forward.h"
 
 namespace demoplan {
 
