@@ -1,9 +1,7 @@
 // demoplan-cli: the headless entry point to every job of demoplan. The commands that read or
 // write video and images run in demoplan-cli-video (video_commands.h), started from here.
 #include "app/cli/command.h"
-#include "core/model/mesh_store.h"
 #include "core/scene/bvh_cache.h"
-#include "core/scene/fitted_mesh_store.h"
 #include "app/cli/video_commands.h"
 
 int main(int argc, char** argv) {
@@ -11,8 +9,7 @@ int main(int argc, char** argv) {
   if (argc > 1 && is_video_command(argv[1])) return run_in_video_executable(argv);
   // Meshes parsed and fitted in earlier runs (mesh_store.h, bvh_cache.h): a scene loads
   // without parsing its mesh files or fitting them.
-  demoplan::set_mesh_store_folder(demoplan::default_mesh_store_folder());
-  demoplan::set_fitted_mesh_folder(demoplan::default_fitted_mesh_folder());
+  demoplan::keep_meshes_between_runs();
   CLI::App app{"demoplan: teach a robot cell a task from one video", "demoplan-cli"};
   std::vector<Command> commands{register_check_command(app), register_graph_command(app),
                                 register_plan_command(app), register_validate_command(app),

@@ -1,16 +1,13 @@
 // demoplan-cli-video: the commands of demoplan-cli that read or write video and images
 // (video_commands.h). demoplan-cli runs it for them; it answers as demoplan-cli.
 #include "app/cli/command.h"
-#include "core/model/mesh_store.h"
 #include "core/scene/bvh_cache.h"
-#include "core/scene/fitted_mesh_store.h"
 
 int main(int argc, char** argv) {
   using namespace demoplan::cli;
   // Meshes parsed and fitted in earlier runs (mesh_store.h, bvh_cache.h): a scene loads
   // without parsing its mesh files or fitting them.
-  demoplan::set_mesh_store_folder(demoplan::default_mesh_store_folder());
-  demoplan::set_fitted_mesh_folder(demoplan::default_fitted_mesh_folder());
+  demoplan::keep_meshes_between_runs();
   CLI::App app{"demoplan: teach a robot cell a task from one video", "demoplan-cli"};
   const std::vector<Command> commands{register_synth_command(app),       register_extract_command(app),
                                       register_new_command(app),         register_inspect_command(app),

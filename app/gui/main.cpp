@@ -12,9 +12,7 @@
 #include <cstdio>
 
 #include "app/common/data_dir.h"
-#include "core/model/mesh_store.h"
 #include "core/scene/bvh_cache.h"
-#include "core/scene/fitted_mesh_store.h"
 #include "ui/document/document.h"
 #include "ui/mainwindow/main_window.h"
 
@@ -66,8 +64,7 @@ int main(int argc, char** argv) {
   QApplication app(argc, argv);
   // Meshes parsed and fitted in earlier runs (mesh_store.h, bvh_cache.h): a scene loads
   // without parsing its mesh files or fitting them.
-  demoplan::set_mesh_store_folder(demoplan::default_mesh_store_folder());
-  demoplan::set_fitted_mesh_folder(demoplan::default_fitted_mesh_folder());
+  demoplan::keep_meshes_between_runs();
   QApplication::setOrganizationName(QStringLiteral("demoplan"));
   QApplication::setApplicationName(QStringLiteral("demoplan"));
   QApplication::setApplicationVersion(QStringLiteral(DEMOPLAN_VERSION));

@@ -2,7 +2,6 @@
 
 #include <cstring>
 #include <filesystem>
-#include <mutex>
 
 #include "core/io/atomic_file.h"
 #include "core/io/binary_file.h"
@@ -23,8 +22,7 @@ std::string file_of(const std::string& folder, const std::string& path) {
   return (fs::path(folder) / name).string();
 }
 
-std::mutex folder_mutex;
-std::string folder_of_meshes;
+CacheFolderSetting folder_of_meshes;
 
 }  // namespace
 
@@ -99,15 +97,9 @@ void store_mesh(const std::string& folder, const TriangleMesh& mesh, const std::
   }
 }
 
-void set_mesh_store_folder(const std::string& folder) {
-  std::lock_guard lock(folder_mutex);
-  folder_of_meshes = folder;
-}
+void set_mesh_store_folder(const std::string& folder) { folder_of_meshes.set(folder); }
 
-std::string mesh_store_folder() {
-  std::lock_guard lock(folder_mutex);
-  return folder_of_meshes;
-}
+std::string mesh_store_folder() { return folder_of_meshes.get(); }
 
 std::string default_mesh_store_folder() { return user_cache_folder("mesh-files"); }
 

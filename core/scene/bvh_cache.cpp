@@ -14,6 +14,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/io/user_cache.h"
+#include "core/model/mesh_store.h"
 #include "core/parallel_for.h"
 #include "core/scene/fitted_mesh_store.h"
 
@@ -59,17 +61,11 @@ bool fitted_from(const fcl::CollisionObjectd& object, const FitInput& in) {
 
 std::atomic<std::size_t> fit_count{0}, read_count{0};
 
-std::mutex folder_mutex;
-std::string folder_of_fits;  // set_fitted_mesh_folder
-
-std::string fitted_mesh_folder() {
-  std::lock_guard lock(folder_mutex);
-  return folder_of_fits;
-}
+CacheFolderSetting fitted_mesh_folder;
 
 // From the folder of fitted meshes when it holds this one, else fitted (and stored there).
 SharedMesh fit(const FitInput& in) {
-  const std::string folder = fitted_mesh_folder();
+  const std::string folder = fitted_mesh_folder.get();
   std::shared_ptr<Bvh> bvh;
   std::shared_ptr<const SphereSet> spheres;
   if (auto stored = read_fitted_mesh(folder, in.key)) {
@@ -218,9 +214,11 @@ std::size_t bvh_fits() { return fit_count.load(); }
 
 std::size_t bvh_reads() { return read_count.load(); }
 
-void set_fitted_mesh_folder(const std::string& folder) {
-  std::lock_guard lock(folder_mutex);
-  folder_of_fits = folder;
+void set_fitted_mesh_folder(const std::string& folder) { fitted_mesh_folder.set(folder); }
+
+void keep_meshes_between_runs() {
+  set_mesh_store_folder(default_mesh_store_folder());
+  set_fitted_mesh_folder(default_fitted_mesh_folder());
 }
 
 }  // namespace demoplan

@@ -19,11 +19,7 @@
 
 #include "core/model/mesh.h"
 #include "core/scene/bounding_spheres.h"
-
-namespace fcl {
-template <typename S>
-class CollisionObject;
-}  // namespace fcl
+#include "core/scene/fcl_forward.h"
 
 namespace demoplan {
 
@@ -55,8 +51,11 @@ std::vector<Eigen::Vector3d> scaled_vertices(const TriangleMesh& mesh, const Eig
 
 // Meshes are also kept in `folder` between runs (fitted_mesh_store.h): a mesh fitted is
 // stored there, a mesh stored there is read instead of fitted. "" (the default): no folder.
-// The tools set default_fitted_mesh_folder() at their start.
+// The tools set default_fitted_mesh_folder() at their start (keep_meshes_between_runs).
 void set_fitted_mesh_folder(const std::string& folder);
+// Parsed mesh files (mesh_store.h) and fitted meshes kept in the user's cache folder: what each
+// tool does at its start.
+void keep_meshes_between_runs();
 
 // Number of meshes fitted in this process so far, and read from the folder instead.
 std::size_t bvh_fits();
