@@ -202,31 +202,11 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
   }
   std::vector<PoseObservation> seen;
   std::vector<bool> learn(models_.size(), false), learn_part(models_.size(), false);
-  // A resting part not measured while another part moves (one hand, busy with that one) is
-  // reported where it rests, with the lowest confidence the event detector counts: a gap there
-  // would date its next grasp inside the other part's carry.
-  auto report_held = [&](size_t k) {
-    PoseSample& sample = s.tracks.samples[k][frame];
-    sample.valid = true;
-    sample.pose = s.world_T_camera * s.camera_T_part[k];
-    sample.confidence = options_.held_confidence;
-    seen.push_back({static_cast<int>(k), sample});
-  };
-  // Nearest first: a part that starts to move in this frame (a hand took it) counts as moving
-  // for the parts behind it in the same frame, before its pull on their lines moves them too.
-  std::vector<size_t> order(models_.size());
-  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return (s.camera_T_part[a] * contours_[a]->centre()).z() < (s.camera_T_part[b] * contours_[b]->centre()).z();
-  });
-  for (const size_t k : order) {
+  for (size_t k = 0; k < models_.size(); ++k) {
     const int part = static_cast<int>(k);
-    // A resting part that a moving one passes in front of stays where it is, not measured (what
-    // is left of its silhouette is too little to tell a move from the occluder's pull).
-    if (resting[k] && passed_in_front(k, moving)) {
-      report_held(k);
-      continue;
-    }
+    // A resting part that a moving one passes in front of stays where it is, unmeasured: what
+    // is left of its silhouette is too little to tell a move from the occluder's pull.
+    if (resting[k] && passed_in_front(k, moving)) continue;
     // A part seen in the last two frames goes on across the view as it moved between them (a
     // carry); not in depth, which a silhouette gives too weakly to extrapolate.
     Pose start = s.camera_T_part[k];
@@ -245,11 +225,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     auto is_seen = [&](const RegionFrameResult& x) {
       return x.contrast >= bar && x.lines > 0 && x.used_lines >= options_.lost_used_fraction * x.lines;
     };
-    // A resting part not seen while another part moves is still where it rests: the hand is
-    // busy with that part. It is not looked for elsewhere: that part, or the hand carrying it,
-    // may show colours it learnt (waiter_0: a hand in front of it in the start frame).
-    const bool held = resting[k] && std::any_of(order.begin(), order.end(), [&](size_t j) { return j != k && moving[j]; });
-    if (!is_seen(r) && !held) {
+    if (!is_seen(r)) {
       // Found elsewhere: only on clearer evidence than a frame tracked on.
       const RegionFrameResult found_again = search(image, part, map);
       if (found_again.contrast >= options_.search_contrast * s.reference_contrast[k] && is_seen(found_again) &&
@@ -262,7 +238,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     // (Every `rest_search_every` frames while it stays lost, and in the frame after a find:
     // a part lost for long costs less.)
     const bool rest_search_now = s.rest_find[k] || s.unseen[k] % std::max(options_.rest_search_every, 1) == 0;
-    if (!is_seen(r) && !held && options_.rest_search && !s.supports.empty() && rest_search_now) {
+    if (!is_seen(r) && options_.rest_search && !s.supports.empty() && rest_search_now) {
       const std::optional<RegionFrameResult> found = rest_search(image, part);
       if (found && s.rest_find[k]) {
         const Eigen::Vector3d moved = found->camera_T_part * contours_[k]->centre() - *s.rest_find[k] * contours_[k]->centre();
@@ -283,7 +259,6 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     if (!seen_now) {
       // Keeps its last pose, and whether it rested there: not being seen is no move.
       s.previous[k].reset();
-      if (held) report_held(k);
       continue;
     }
     if (resting[k] && !found_resting && r.hidden_lines > options_.rest_hidden_fraction * r.lines) {
@@ -308,7 +283,6 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       s.previous[k] = s.camera_T_part[k];
     else
       s.previous[k].reset();
-    moving[k] = moving[k] || !r.camera_T_part.isApprox(s.camera_T_part[k]);
     s.camera_T_part[k] = r.camera_T_part;
     // Not from a find at rest: if it were wrong, the colours learnt there would hold it there.
     learn[k] = !found_resting && r.contrast >= options_.learn_contrast * s.reference_contrast[k];

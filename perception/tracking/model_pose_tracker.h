@@ -91,9 +91,6 @@ struct ModelTrackerOptions {
   double rest_hold_px = 2.0;      // a resting part's smaller moves (and turns) are not taken
   double rest_hold_deg = 2.0;
   double rest_hidden_fraction = 0.4;  // of its lines hidden: a resting part is not measured
-  // A resting part not measured while another part moves is reported where it rests, with this
-  // confidence (an inference, not a measurement: the event detector's lowest, 0.5).
-  double held_confidence = 0.5;
   double light_tolerance = 0.05;      // a frame whose light drifted further is brought back (light_correction.h)
   // On the start frame: the part segmented around its start (GrabCut), and the start refined on
   // that segmentation until it stays (at most this many rounds at its depth, as many free).
