@@ -79,6 +79,36 @@ TEST(TrackSegmentation, ARestWithDriftAndAnOutlierGivesOneCarry) {
   EXPECT_TRUE(s.doubts.empty());
 }
 
+// tunnel_0's second release: the part stops, then the detector's orientation flips by 103 and
+// 166 degrees for single frames while its position estimate shifts by 6 mm at the first flip
+// and holds there within 0.5 mm. The samples before the shift are as much the rest as those
+// after: the release is where the part stopped, not where the estimate settled.
+TEST(TrackSegmentation, AFlipThatShiftsARestingPartsEstimateKeepsTheReleaseWhereItStopped) {
+  TrackBuilder b;
+  const int o = b.add("part");
+  b.tracks.frames = 55;
+  b.tracks.samples[o].resize(55);
+  const Eigen::Vector3d A(0.2, 0.4, 0.85), B(-0.246, 0.228, 0.841);
+  b.carry(o, A, B + Eigen::Vector3d(-0.002, -0.003, 0.002), 19, 45, 0.0, 1.0, 0, 44);
+  // The samples of tunnel_0's frames 70-79 about where the estimate settles (mm).
+  const double offsets[10][3] = {{-2.0, -3.2, 1.7}, {-0.1, -3.9, 2.3}, {4.0, -4.2, 1.8}, {4.2, -4.5, 1.8},
+                                 {-0.4, 0.1, 0.0},  {0.0, 0.0, 0.1},   {-0.3, 0.1, 0.0},  {0.4, -0.1, 0.0},
+                                 {0.1, 0.2, 0.0},   {-0.6, 0.4, -0.2}};
+  for (int k = 0; k < 10; ++k) b.set(o, 45 + k, B + 0.001 * Eigen::Vector3d(offsets[k][0], offsets[k][1], offsets[k][2]));
+  b.tracks.samples[o][49].pose.linear() = Eigen::AngleAxisd(103.0 * M_PI / 180.0, Eigen::Vector3d(0.3, 0.9, 0.3).normalized()).toRotationMatrix();
+  b.tracks.samples[o][51].pose.linear() = Eigen::AngleAxisd(166.0 * M_PI / 180.0, Eigen::Vector3d(0.9, 0.1, 0.4).normalized()).toRotationMatrix();
+  const TrackSegmentation s = segment_tracks(b.tracks);
+  const auto carries = s.contacts(b.tracks).carries;
+  ASSERT_EQ(carries.size(), 1u);
+  EXPECT_EQ(carries[0].start, 19);
+  EXPECT_EQ(carries[0].end, 45);  // the first frame at rest
+  const auto rests = of_kind(s, o, SegmentKind::Rest);
+  ASSERT_EQ(rests.size(), 2u);  // the flips and the shift make no motion
+  EXPECT_EQ(rests[1].first, 45);
+  EXPECT_EQ(rests[1].last, 54);
+  EXPECT_LT((rests[1].pose.translation() - B).norm(), 0.005);
+}
+
 TEST(TrackSegmentation, ACarryWithADropoutKeepsItsEvents) {
   TrackBuilder b;
   const int o = b.add("part");
