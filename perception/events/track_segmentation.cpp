@@ -28,11 +28,17 @@ bool rigid(const Pose& p) {
   return (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-3 && R.determinant() > 0;
 }
 
-double median(std::vector<double> v) {
+// The k-th smallest of v (0 when v is empty).
+double order_statistic(std::vector<double> v, size_t k) {
   if (v.empty()) return 0.0;
-  const auto mid = v.begin() + static_cast<long>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
+  const auto kth = v.begin() + static_cast<long>(std::min(k, v.size() - 1));
+  std::nth_element(v.begin(), kth, v.end());
+  return *kth;
+}
+
+double median(std::vector<double> v) {
+  const size_t mid = v.size() / 2;
+  return order_statistic(std::move(v), mid);
 }
 
 Eigen::Vector3d coordinate_median(const std::vector<Eigen::Vector3d>& points) {
@@ -178,10 +184,8 @@ double median_spread(std::vector<double> d) { return std::max(1.0, median(std::m
 // rest's other samples would cost as much as moving.
 double spread_of(const std::vector<Eigen::Vector3d>& pts, const Eigen::Vector3d& centre) {
   std::vector<double> d = distances(pts, centre);
-  if (d.empty()) return 1.0;
-  std::vector<double> sorted = d;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() * 3 / 5, sorted.end());
-  return std::max(median_spread(std::move(d)), sorted[sorted.size() * 3 / 5] / 1.72);
+  const double sixtieth = order_statistic(d, d.size() * 3 / 5);
+  return std::max(median_spread(std::move(d)), sixtieth / 1.72);
 }
 
 double rest_spread(const Track& t, const TrackSegment& rest) {
