@@ -36,9 +36,9 @@ void compare_path(const Path& path, const std::string& task, const std::string& 
 
 void print(const char* what, const std::string& name, const AgreementCounts& c, double seconds) {
   std::printf("%-8s %-22s states %9ld  colliding %8ld  held %8ld  near boundary %8ld  disagreements %ld  "
-              "pair mismatches %ld  (%.0f s)\n",
+              "pair mismatches %ld  answer-only disagreements %ld  (%.0f s)\n",
               what, name.c_str(), c.states, c.colliding, c.held, c.boundary, c.disagreements, c.pair_mismatches,
-              seconds);
+              c.answer_only_disagreements, seconds);
   if (!c.first_disagreement.empty()) std::printf("  first: %s\n", c.first_disagreement.c_str());
   std::fflush(stdout);
 }
@@ -117,9 +117,15 @@ int main(int argc, char** argv) {
     path_total.add(p);
   }
 
-  std::printf("\n%zu scenes: %ld random/held/moved/boundary states, %ld disagreements, %ld pair mismatches\n",
-              jobs.size(), random_total.states, random_total.disagreements, random_total.pair_mismatches);
-  std::printf("%d planned paths (%d not solved) and %zu given: %ld path states, %ld disagreements\n", planned,
-              not_solved, path_files.size(), path_total.states, path_total.disagreements);
-  return random_total.disagreements + path_total.disagreements + random_total.pair_mismatches > 0 ? 1 : 0;
+  std::printf("\n%zu scenes: %ld random/held/moved/boundary states, %ld disagreements, %ld pair mismatches, "
+              "%ld answer-only disagreements\n",
+              jobs.size(), random_total.states, random_total.disagreements, random_total.pair_mismatches,
+              random_total.answer_only_disagreements);
+  std::printf("%d planned paths (%d not solved) and %zu given: %ld path states, %ld disagreements, %ld answer-only\n",
+              planned, not_solved, path_files.size(), path_total.states, path_total.disagreements,
+              path_total.answer_only_disagreements);
+  return random_total.disagreements + path_total.disagreements + random_total.pair_mismatches +
+                     random_total.answer_only_disagreements + path_total.answer_only_disagreements > 0
+             ? 1
+             : 0;
 }

@@ -18,9 +18,21 @@ Pose joint_motion(const Joint& joint, double value) {
 }
 
 namespace {
+// parent * origin * joint_motion, without the product's work on the motion's zero parts (the
+// same numbers: a turn leaves the translation as it is, a slide the rotation).
 Pose child_pose(const Joint& j, const Pose& parent, const Eigen::VectorXd& q) {
-  if (j.q_index < 0) return parent * j.origin;
-  return parent * j.origin * joint_motion(j, q[j.q_index]);
+  Pose T = parent * j.origin;
+  if (j.q_index < 0) return T;
+  const double value = q[j.q_index];
+  switch (j.type) {
+    case JointType::Revolute:
+    case JointType::Continuous:
+      T.linear() = T.linear() * Eigen::AngleAxisd(value, j.axis).toRotationMatrix();
+      break;
+    case JointType::Prismatic: T.translation() += T.linear() * (value * j.axis); break;
+    case JointType::Fixed: break;
+  }
+  return T;
 }
 }  // namespace
 

@@ -85,6 +85,9 @@ struct CollisionData::Workspace {
   PoseList object_poses;
   std::vector<CollisionObjectd> robot;    // one per robot geometry, world transform set per query
   std::vector<CollisionObjectd> objects;  // one per object geometry
+  // The moving geometries' world AABBs by GeomInfo::slot, copied once per query: FCL's
+  // getAABB and overlap are compiled into libfcl (extern templates), a call each per pair.
+  std::vector<fcl::AABBd> boxes;
   fcl::CollisionRequestd request;
   fcl::CollisionResultd result;
 
@@ -108,6 +111,17 @@ struct CollisionData::Workspace {
   // Mesh-mesh pairs FCL found touching: triangle pairs that may prove the next contact
   // (mesh_contact_witness.h), keyed by the pair's GeomInfo::uid.
   std::unordered_map<std::uint64_t, MeshContactWitnesses> witnesses;
+
+  // Robot pairs whose exact test waits until every cheap test of the query has had its say
+  // (Query::deferred); reused between queries.
+  struct ExactTest {
+    CollisionObjectd* a;
+    const GeomInfo* ia;
+    CollisionObjectd* b;
+    const GeomInfo* ib;
+    MeshContactWitnesses* witnesses;
+  };
+  std::vector<ExactTest> waiting;
 };
 
 CollisionData::CollisionData() = default;
@@ -141,13 +155,19 @@ struct CollisionChecker::Impl {
     const GeomInfo* query_info = nullptr;  // broad phase: the moving geometry asked about
     CollisionObjectd* query_object = nullptr;
     const Eigen::VectorXd* q = nullptr;    // the robot's configuration
+    // When only the answer is asked for, any colliding pair will do: the robot's pairs that no
+    // bound separates or proves touching wait in Workspace::waiting, so that a cheap proof
+    // further on spares their exact tests (finish() runs them when none came).
+    bool defer_exact = false;
 
     bool done() const { return hit && !all; }
 
     // `table`: a self pair's distance table, asked when the bounds cannot separate the pair
     // (measuring a node costs more than FCL's query; only pairs that reach FCL fill it).
+    // `may_wait`: the pair's exact test may be deferred (robot pairs; object pairs feed the
+    // caches of Workspace::pair_free and world_free, which need their answer now).
     void narrow(CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib,
-                const JointPairTable* table = nullptr) {
+                const JointPairTable* table = nullptr, bool may_wait = false) {
       bool touch = false;
       if (impl->options.fast_path) {
         const PlacedBound pa = impl->placed(*data, a, ia), pb = impl->placed(*data, b, ib);
@@ -161,13 +181,35 @@ struct CollisionChecker::Impl {
         touch = witnesses->prove(a, b);
       }
       if (!touch) {
-        data->result.clear();
-        if (fcl::collide(&a, &b, data->request, data->result) == 0) return;
-        if (witnesses && data->result.numContacts() > 0) {
-          const fcl::Contactd& c = data->result.getContact(0);
-          if (c.o1 == a.collisionGeometry().get()) witnesses->learn(a, c.b1, b, c.b2);
+        if (defer_exact && may_wait) {
+          data->waiting.push_back({&a, &ia, &b, &ib, witnesses});
+          return;
         }
+        if (!exact(a, b, witnesses)) return;
       }
+      record(ia, ib);
+    }
+
+    // The deferred exact tests, in the order they were met, until one collides.
+    void finish() {
+      for (const auto& t : data->waiting) {
+        if (hit) break;
+        if (exact(*t.a, *t.b, t.witnesses)) record(*t.ia, *t.ib);
+      }
+      data->waiting.clear();
+    }
+
+    bool exact(CollisionObjectd& a, CollisionObjectd& b, MeshContactWitnesses* witnesses) {
+      data->result.clear();
+      if (fcl::collide(&a, &b, data->request, data->result) == 0) return false;
+      if (witnesses && data->result.numContacts() > 0) {
+        const fcl::Contactd& c = data->result.getContact(0);
+        if (c.o1 == a.collisionGeometry().get()) witnesses->learn(a, c.b1, b, c.b2);
+      }
+      return true;
+    }
+
+    void record(const GeomInfo& ia, const GeomInfo& ib) {
       CollisionPair p{ia.name, ib.name};
       if (!hit) first = p;
       hit = true;
@@ -199,7 +241,7 @@ struct CollisionChecker::Impl {
     CollisionObjectd* other = (o1 == q->query_object) ? o2 : o1;
     const auto* f = static_cast<const GeomInfo*>(other->getUserData());
     if (q->impl->skip_furniture(*q->query_info, *f, *q->allowed)) return false;
-    q->narrow(*q->query_object, *q->query_info, *other, *f);
+    q->narrow(*q->query_object, *q->query_info, *other, *f, nullptr, q->query_info->owner == Owner::Robot);
     return q->done();
   }
 
@@ -217,6 +259,7 @@ struct CollisionChecker::Impl {
     for (size_t i = 0; i < robot.size(); ++i) {
       d.robot[i].setTransform(d.link_poses[robot[i].link] * robot[i].local);
       d.robot[i].computeAABB();
+      d.boxes[robot[i].slot] = d.robot[i].getAABB();
     }
     const size_t n = objects.size();
     if (d.last_object_tf.size() != n) {
@@ -236,6 +279,7 @@ struct CollisionChecker::Impl {
       }
       d.objects[i].setTransform(tf);
       d.objects[i].computeAABB();
+      d.boxes[objects[i].slot] = d.objects[i].getAABB();
     }
   }
 
@@ -279,11 +323,17 @@ struct CollisionChecker::Impl {
     Workspace& d;
     bool done() const { return q.done(); }
     void robot_world(CollisionObjectd& obj, const GeomInfo& info) { impl.against_world(q, obj, info); }
+    bool boxes_overlap(const GeomInfo& ia, const GeomInfo& ib) const {
+      const fcl::AABBd &a = d.boxes[ia.slot], &b = d.boxes[ib.slot];
+      for (int k = 0; k < 3; ++k)  // as fcl::AABB::overlap: touching boxes overlap
+        if (a.min_[k] > b.max_[k] || b.min_[k] > a.max_[k]) return false;
+      return true;
+    }
     void self_pair(size_t k, CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {
-      if (a.getAABB().overlap(b.getAABB())) q.narrow(a, ia, b, ib, impl.self_tables[k].get());
+      if (boxes_overlap(ia, ib)) q.narrow(a, ia, b, ib, impl.self_tables[k].get(), true);
     }
     void pair(CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {
-      if (a.getAABB().overlap(b.getAABB())) q.narrow(a, ia, b, ib);
+      if (boxes_overlap(ia, ib)) q.narrow(a, ia, b, ib);
     }
     void object_robot(size_t, CollisionObjectd& a, const GeomInfo& ia, CollisionObjectd& b, const GeomInfo& ib) {
       pair(a, ia, b, ib);
@@ -308,6 +358,7 @@ struct CollisionChecker::Impl {
   void run(Query& q) const {
     CollisionVisitor v{*this, q, *q.data};
     visit_pairs(*q.data, *q.allowed, v);
+    q.finish();
   }
 };
 
@@ -460,6 +511,7 @@ CollisionData CollisionChecker::make_data() const {
   d.w_->child_placed.assign(impl_->moving_parts, 0);
   d.w_->placed_at.assign(impl_->robot.size() + impl_->objects.size(), 0);
   d.w_->parts_placed.assign(impl_->robot.size() + impl_->objects.size(), 0);
+  d.w_->boxes.resize(impl_->robot.size() + impl_->objects.size());
   return d;
 }
 
@@ -480,6 +532,7 @@ bool CollisionChecker::in_collision(const SceneState& state, CollisionData& data
   impl_->place(scene_, state, *data.w_);
   Impl::Query q{impl_.get(), data.w_.get(), &allowed, nullptr, {}};
   q.q = &state.q;
+  q.defer_exact = !hit && impl_->options.fast_path;
   impl_->run(q);
   if (q.hit && hit) *hit = q.first;
   return q.hit;

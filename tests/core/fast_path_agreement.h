@@ -21,11 +21,13 @@ struct AgreementCounts {
   long boundary = 0;   // bisection states
   long disagreements = 0;    // in_collision differs
   long pair_mismatches = 0;  // same answer, another first pair reported
+  long answer_only_disagreements = 0;  // asked without a pair (exact tests deferred): differs
   std::string first_disagreement;
 
   void add(const AgreementCounts& o) {
     states += o.states, colliding += o.colliding, held += o.held, boundary += o.boundary;
     disagreements += o.disagreements, pair_mismatches += o.pair_mismatches;
+    answer_only_disagreements += o.answer_only_disagreements;
     if (first_disagreement.empty()) first_disagreement = o.first_disagreement;
   }
 };
@@ -46,10 +48,17 @@ public:
   // Compares one state; true when both answer alike.
   bool compare(const SceneState& s, const AllowedContacts& allowed, AgreementCounts& c) {
     CollisionPair fast_hit, fcl_hit;
+    const bool answer_only = fast_.in_collision(s, fast_data_, allowed);  // first: as the planner asks
     const bool fast = fast_.in_collision(s, fast_data_, allowed, &fast_hit);
     const bool fcl = fcl_.in_collision(s, fcl_data_, allowed, &fcl_hit);
     ++c.states;
     c.colliding += fcl;
+    if (answer_only != fcl) {
+      ++c.answer_only_disagreements;
+      if (c.first_disagreement.empty())
+        c.first_disagreement = scene_.name + ": asked without a pair, the fast path says " +
+                               (answer_only ? "collision" : "free") + ", FCL the opposite";
+    }
     if (fast != fcl) {
       ++c.disagreements;
       if (c.first_disagreement.empty()) {

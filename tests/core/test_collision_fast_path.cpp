@@ -47,6 +47,7 @@ TEST_P(FastPathOnEveryScene, AnswersAsFclAlone) {
   const AgreementCounts c = agreement.run(20'000, 17);
   EXPECT_EQ(c.disagreements, 0) << c.first_disagreement;
   EXPECT_EQ(c.pair_mismatches, 0);
+  EXPECT_EQ(c.answer_only_disagreements, 0) << c.first_disagreement;
   // The comparison means something only with both answers, near the boundary too.
   EXPECT_GT(c.colliding, c.states / 20);
   EXPECT_LT(c.colliding, c.states - c.states / 20);
