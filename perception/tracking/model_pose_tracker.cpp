@@ -40,6 +40,21 @@ struct ModelPoseTracker::State {
   std::vector<Eigen::Matrix3d> rest_rotation;  // each part's world orientation at its last rest
   std::vector<std::optional<Pose>> rest_find;  // found at rest in the last frame (rest_search), to confirm
   std::vector<int> unseen;                     // frames each part has not been seen in, in a row
+  std::vector<int> measured_at;                // the last frame each part's pose was measured in (-1: none)
+  // A resting part not measured while another part moves (the one hand busy with that one):
+  // the frames it is held at its rest in, written into the tracks only once the hold is borne
+  // out (ModelTrackerOptions::held_confidence).
+  struct Hold {
+    bool on = false;
+    std::vector<int> frames;
+    std::vector<bool> movers;  // the parts seen moving during the hold
+    std::vector<Eigen::Vector3d> mover_from;  // where each was (world) when first seen moving in it
+    // Its colours as they show at the rest while nothing covers it there (its model may have
+    // learnt a hand that was in front of it), taken up if the hold is borne out unmeasured.
+    ColorHistograms colors;
+    double contrast = 0.0;  // with those, in the last such frame
+  };
+  std::vector<Hold> holds;
   std::deque<std::pair<int, cv::Mat>> recent;  // the last frames while a part was not seen (follow_back)
   PoseTracks tracks;
   bool started = false;  // the init frame has been seen
@@ -91,6 +106,8 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   for (const auto& m : models_) s.silhouettes.push_back(m.mesh.geometry());
   s.rest_find.assign(models_.size(), std::nullopt);
   s.unseen.assign(models_.size(), 0);
+  s.measured_at.assign(models_.size(), -1);
+  s.holds.assign(models_.size(), State::Hold());
   if (options_.rest_search) s.supports = support_levels(furniture_);
   if (!furniture_.empty()) {
     Rasterizer r = occlusion_rasterizer();
@@ -202,11 +219,93 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
   }
   std::vector<PoseObservation> seen;
   std::vector<bool> learn(models_.size(), false), learn_part(models_.size(), false);
-  for (size_t k = 0; k < models_.size(); ++k) {
+  // Nearest first: a part a hand takes in this frame counts as moving for the parts behind it
+  // in the same frame, before its (and the hand's) pull on their lines drags them along.
+  std::vector<size_t> order(models_.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return (s.camera_T_part[a] * contours_[a]->centre()).z() < (s.camera_T_part[b] * contours_[b]->centre()).z();
+  });
+  for (const size_t k : order) {
     const int part = static_cast<int>(k);
+    // Held at its rest while another part moves (the one hand is busy with that one), from a
+    // frame it was measured at rest in: the frames it is not measured in are kept aside and
+    // reported at the rest only when the hold is borne out, by its next measurement at that
+    // rest or by every part that moved meanwhile being seen at rest again (and not having
+    // moved together, as parts on a tray do: this one may have ridden along). Otherwise
+    // (measured elsewhere, the movers rode) none of them is: an inferred rest covers the whole
+    // time the part is not measured, or none of it.
+    State::Hold& hold = s.holds[k];
+    bool others_moving = false;
+    for (size_t j = 0; j < models_.size(); ++j) others_moving = others_moving || (j != k && moving[j]);
+    // Every part that moved during the hold seen again at rest (its image still over the last
+    // three frames it was seen in): until then the hand may still be busy with it, out of
+    // sight or not.
+    auto movers_at_rest = [&] {
+      for (size_t j = 0; j < models_.size(); ++j) {
+        if (!hold.on || !hold.movers[j]) continue;
+        if (!s.seen_last[j] || s.centres[j].size() < 3) return false;
+        for (const auto& c : s.centres[j])
+          if ((c - s.centres[j].front()).norm() >= options_.rest_px) return false;
+      }
+      return true;
+    };
+    const bool may_hold = options_.hold_resting &&
+                          ((others_moving && (hold.on || (resting[k] && s.measured_at[k] == frame - 1))) ||
+                           (hold.on && !movers_at_rest()));
+    auto hold_frame = [&] {
+      if (!hold.on) {
+        hold = State::Hold();
+        hold.on = true;
+        hold.movers.assign(models_.size(), false);
+        hold.mover_from.resize(models_.size());
+      }
+      hold.frames.push_back(frame);
+      for (size_t j = 0; j < models_.size(); ++j)
+        if (j != k && moving[j] && !hold.movers[j]) {
+          hold.movers[j] = true;
+          // From where it rested: its pose before this frame's move, or the last one kept.
+          hold.mover_from[j] = (s.world_T_camera * (s.previous[j] ? *s.previous[j] : s.camera_T_part[j])).translation();
+        }
+    };
+    // Two of the parts that moved during the hold went the same way (each farther than
+    // hold_ride_min, their moves apart by less than hold_ride_tolerance of the longer).
+    auto movers_rode = [&] {
+      if (!hold.on) return false;
+      std::vector<Eigen::Vector3d> moves;
+      for (size_t j = 0; j < models_.size(); ++j)
+        if (hold.movers[j]) moves.push_back((s.world_T_camera * s.camera_T_part[j]).translation() - hold.mover_from[j]);
+      for (size_t a = 0; a < moves.size(); ++a)
+        for (size_t b = a + 1; b < moves.size(); ++b)
+          if (moves[a].norm() > options_.hold_ride_min && moves[b].norm() > options_.hold_ride_min &&
+              (moves[a] - moves[b]).norm() < options_.hold_ride_tolerance * std::max(moves[a].norm(), moves[b].norm()))
+            return true;
+      return false;
+    };
+    auto end_hold = [&](bool borne_out, bool unmeasured) {
+      if (!hold.on) return;
+      hold.on = false;
+      if (!borne_out) return;
+      // Not measured at its rest through the hold, though nothing modelled covered it there:
+      // its colours did not fit what showed (they may have been learnt from a hand in front of
+      // it), and what showed is taken for them.
+      if (unmeasured && options_.hold_relearn && hold.colors.initialised() && hold.contrast > 0) {
+        s.colors[k] = hold.colors;
+        s.reference_contrast[k] = hold.contrast;
+      }
+      for (const int f : hold.frames) {
+        PoseSample& held = s.tracks.samples[k][f];
+        held.valid = true;
+        held.pose = s.world_T_camera * s.camera_T_part[k];
+        held.confidence = options_.held_confidence;
+      }
+    };
     // A resting part that a moving one passes in front of stays where it is, unmeasured: what
     // is left of its silhouette is too little to tell a move from the occluder's pull.
-    if (resting[k] && passed_in_front(k, moving)) continue;
+    if (resting[k] && passed_in_front(k, moving)) {
+      if (may_hold) hold_frame();
+      continue;
+    }
     // A part seen in the last two frames goes on across the view as it moved between them (a
     // carry); not in depth, which a silhouette gives too weakly to extrapolate.
     Pose start = s.camera_T_part[k];
@@ -225,6 +324,29 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     auto is_seen = [&](const RegionFrameResult& x) {
       return x.contrast >= bar && x.lines > 0 && x.used_lines >= options_.lost_used_fraction * x.lines;
     };
+    const bool mostly_hidden = resting[k] && r.hidden_lines > options_.rest_hidden_fraction * r.lines;
+    if (!is_seen(r) || mostly_hidden) {
+      if (may_hold) {
+        // Not looked for elsewhere while held: the part moving, or the hand carrying it, may
+        // show colours it learnt (waiter_0: the arm in front of it in the start frame).
+        hold_frame();
+        // What shows at the rest while nothing modelled covers it, for its colours if the hold
+        // is borne out unmeasured.
+        if (r.hidden_lines == 0 && options_.hold_relearn) {
+          learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], map, part, hold.colors, options_.region);
+          hold.contrast = contour_contrast(image, s.intrinsics, *contours_[k], hold.colors, s.camera_T_part[k]);
+        }
+        continue;
+      }
+      // The movers at rest again (else it would be held on): borne out unless they rode.
+      if (hold.on) end_hold(movers_at_rest() && !movers_rode(), true);
+    } else if (hold.on) {
+      // Measured: still at its rest (within what a resting part's moves are held to), or not.
+      const double turn = Eigen::AngleAxisd(s.camera_T_part[k].linear().transpose() * r.camera_T_part.linear()).angle();
+      end_hold((centre_in_image(k, r.camera_T_part) - s.centres[k].back()).norm() < options_.rest_hold_px &&
+                   turn < options_.rest_hold_deg * M_PI / 180,
+               false);
+    }
     if (!is_seen(r)) {
       // Found elsewhere: only on clearer evidence than a frame tracked on.
       const RegionFrameResult found_again = search(image, part, map);
@@ -283,6 +405,9 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       s.previous[k] = s.camera_T_part[k];
     else
       s.previous[k].reset();
+    // Its rest broke (not in the start frame, where the parts rest: a first measurement's
+    // correction is no move).
+    if (resting[k] && frame > init_.frame && !r.camera_T_part.isApprox(s.camera_T_part[k])) moving[k] = true;
     s.camera_T_part[k] = r.camera_T_part;
     // Not from a find at rest: if it were wrong, the colours learnt there would hold it there.
     learn[k] = !found_resting && r.contrast >= options_.learn_contrast * s.reference_contrast[k];
@@ -294,6 +419,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     sample.pose = s.world_T_camera * r.camera_T_part;
     const double used = static_cast<double>(r.used_lines) / r.lines;
     sample.confidence = std::clamp(r.contrast / 0.5, 0.0, 1.0) * std::min(1.0, used / 0.5);
+    s.measured_at[k] = frame;
     seen.push_back({part, sample});
     if (found_resting) follow_back(k, frame, bar);
   }

@@ -9,7 +9,9 @@
 // across the view scored by contrast, the best tracked from; then among the places on the
 // furniture where it could have been put down, support_search.h, judged on its visible lines).
 // A part found so is followed back into the frames it was missed in. A part seen in the last
-// two frames is predicted to go on as it moved (a carry).
+// two frames is predicted to go on as it moved (a carry). Parts are tracked nearest first; a
+// resting part that is not measured while another moves is held at its rest (not searched for)
+// and reported there only if that is borne out (ModelTrackerOptions::hold_resting).
 #include <memory>
 #include <optional>
 #include <string>
@@ -91,6 +93,21 @@ struct ModelTrackerOptions {
   double rest_hold_px = 2.0;      // a resting part's smaller moves (and turns) are not taken
   double rest_hold_deg = 2.0;
   double rest_hidden_fraction = 0.4;  // of its lines hidden: a resting part is not measured
+  // A resting part not measured while another part moves (the one hand busy with that one) is
+  // held at its rest, not looked for elsewhere, from a frame it was measured at rest in; those
+  // frames are reported at the rest, with this confidence (an inference: the event detector's
+  // lowest, 0.5), once the hold is borne out: by its next measurement at the rest, or by the
+  // parts that moved meanwhile all seen at rest again. Otherwise none of them is.
+  bool hold_resting = true;
+  double held_confidence = 0.5;
+  // A hold borne out while the part was never measured at its rest: its colours are learnt
+  // anew from the held frames in which nothing modelled covered it.
+  bool hold_relearn = true;
+  // Two parts that moved during a hold the same way (each farther than hold_ride_min, their
+  // moves apart by less than this fraction of the longer) rode on something: the held part may
+  // have ridden with them, and the hold is not borne out by their rest.
+  double hold_ride_min = 0.05;  // m
+  double hold_ride_tolerance = 0.3;
   double light_tolerance = 0.05;      // a frame whose light drifted further is brought back (light_correction.h)
   // On the start frame: the part segmented around its start (GrabCut), and the start refined on
   // that segmentation until it stays (at most this many rounds at its depth, as many free).

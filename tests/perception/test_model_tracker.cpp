@@ -438,6 +438,60 @@ TEST(ModelTracker, FindsAPartPutDownHalfBehindAWall) {
   for (int f = 20; f < 36; ++f) EXPECT_FALSE(lost.samples[0][f].valid) << "frame " << f << " found without the rest search";
 }
 
+// Two boxes, one behind the other: the one in front hides the lower part of the one behind, and
+// an arm (a skin-coloured bar, not tracked) reaches down over the box behind onto the front box,
+// so the box behind learns the arm's colour as its own in the start frame. The arm takes the
+// front box in frame 5 and carries it away to the left (frames 5-16) past the box behind, which
+// stays. Listed first, the box behind is tracked before the front one in each frame; it must not
+// be dragged along by the front box and the arm: held where it stands while the front box
+// moves, and reported there once that is borne out (the front box at rest again), never moved.
+TEST(ModelTracker, APartBehindIsHeldWhileTheOneInFrontIsCarriedPast) {
+  const RenderMesh front = box_mesh(kBox, {40, 200, 220}), behind = box_mesh(kBox, {235, 235, 235});
+  const RenderMesh arm = box_mesh({0.05, 0.4, 0.05}, {150, 180, 230});
+  const Pose behind_pose = box_pose(0.03, -0.03, 1.0);
+  std::vector<Pose> truth;
+  Clip clip;
+  for (int f = 0; f < 30; ++f) {
+    const double s = std::clamp((f - 5) / 11.0, 0.0, 1.0);
+    truth.push_back(box_pose(-0.18 * s, 0.06 - 0.03 * std::sin(M_PI * s), 0.85));
+    Pose arm_pose = Pose::Identity();
+    arm_pose.translation() = truth.back().translation() + Eigen::Vector3d(0.0, -0.25, 0.0);  // from above
+    Rasterizer r(clip.size, clip.K.fx, clip.K.fy, clip.K.cx, clip.K.cy, Pose::Identity());
+    r.clear({180, 160, 150}, {120, 110, 100});
+    r.draw(behind, behind_pose);
+    r.draw(front, truth.back());
+    r.draw(arm, arm_pose);
+    clip.frames.push_back(r.color().clone());
+  }
+  cv::RNG rng(3);
+  for (auto& frame : clip.frames) {
+    Degradation d;
+    d.noise_sigma = 2.0;
+    degrade(frame, d, rng);
+  }
+  TrackerInit init;
+  init.parts.push_back({"behind", behind_pose});
+  init.parts.push_back({"front", truth[0]});
+  ModelTrackerOptions o;
+  o.contour.views = 300;
+  ModelPoseTracker tracker({{"behind", true, behind}, {"front", true, front}}, init, "init.json", {}, o);
+  tracker.start({clip.camera(), 30.0, static_cast<int>(clip.frames.size())});
+  for (size_t f = 0; f < clip.frames.size(); ++f) tracker.track(static_cast<int>(f), clip.frames[f]);
+  const PoseTracks tracks = tracker.finish();
+  for (int f = 0; f < 30; ++f) {
+    const PoseSample& s = tracks.samples[0][f];
+    if (f >= 5) {
+      EXPECT_TRUE(s.valid && s.confidence >= 0.5) << "frame " << f << " not reported";
+    }
+    if (s.valid) {
+      EXPECT_LT(error_mm(s, behind_pose), 5.0) << "frame " << f;
+    }
+  }
+  // The front box followed to where it was put.
+  ASSERT_TRUE(tracks.samples[1][29].valid);
+  EXPECT_LT(error_mm(tracks.samples[1][29], truth[29]), 10.0);
+}
+
 // A start that puts a part behind the camera or beside the picture is refused, naming the part.
 TEST(ModelTracker, RefusesAStartOutsideTheImage) {
   const Clip clip = render_clip({box_pose(0, 0, 0.9)}, {false});
