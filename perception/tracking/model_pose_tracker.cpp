@@ -17,6 +17,7 @@
 #include "perception/render/rasterizer.h"
 #include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/light_correction.h"
+#include "perception/tracking/rest_hold.h"
 #include "perception/tracking/surface_flow.h"
 
 namespace demoplan::perception {
@@ -41,20 +42,7 @@ struct ModelPoseTracker::State {
   std::vector<std::optional<Pose>> rest_find;  // found at rest in the last frame (rest_search), to confirm
   std::vector<int> unseen;                     // frames each part has not been seen in, in a row
   std::vector<int> measured_at;                // the last frame each part's pose was measured in (-1: none)
-  // A resting part not measured while another part moves (the one hand busy with that one):
-  // the frames it is held at its rest in, written into the tracks only once the hold is borne
-  // out (ModelTrackerOptions::held_confidence).
-  struct Hold {
-    bool on = false;
-    std::vector<int> frames;
-    std::vector<bool> movers;  // the parts seen moving during the hold
-    std::vector<Eigen::Vector3d> mover_from;  // where each was (world) when first seen moving in it
-    // Its colours as they show at the rest while nothing covers it there (its model may have
-    // learnt a hand that was in front of it), taken up if the hold is borne out unmeasured.
-    ColorHistograms colors;
-    double contrast = 0.0;  // with those, in the last such frame
-  };
-  std::vector<Hold> holds;
+  std::vector<RestHold> holds;                 // each part's, while it is held at its rest (rest_hold.h)
   std::deque<std::pair<int, cv::Mat>> recent;  // the last frames while a part was not seen (follow_back)
   PoseTracks tracks;
   bool started = false;  // the init frame has been seen
@@ -107,7 +95,7 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.rest_find.assign(models_.size(), std::nullopt);
   s.unseen.assign(models_.size(), 0);
   s.measured_at.assign(models_.size(), -1);
-  s.holds.assign(models_.size(), State::Hold());
+  s.holds.assign(models_.size(), RestHold());
   if (options_.rest_search) s.supports = support_levels(furniture_);
   if (!furniture_.empty()) {
     Rasterizer r = occlusion_rasterizer();
@@ -228,60 +216,24 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
   });
   for (const size_t k : order) {
     const int part = static_cast<int>(k);
-    // Held at its rest while another part moves (the one hand is busy with that one), from a
-    // frame it was measured at rest in: the frames it is not measured in are kept aside and
-    // reported at the rest only when the hold is borne out, by its next measurement at that
-    // rest or by every part that moved meanwhile being seen at rest again (and not having
-    // moved together, as parts on a tray do: this one may have ridden along). Otherwise
-    // (measured elsewhere, the movers rode) none of them is: an inferred rest covers the whole
-    // time the part is not measured, or none of it.
-    State::Hold& hold = s.holds[k];
+    // Held at its rest while another part moves (rest_hold.h).
+    RestHold& hold = s.holds[k];
     bool others_moving = false;
     for (size_t j = 0; j < models_.size(); ++j) others_moving = others_moving || (j != k && moving[j]);
-    // Every part that moved during the hold seen again at rest (its image still over the last
-    // three frames it was seen in): until then the hand may still be busy with it, out of
-    // sight or not.
-    auto movers_at_rest = [&] {
-      for (size_t j = 0; j < models_.size(); ++j) {
-        if (!hold.on || !hold.movers[j]) continue;
-        if (!s.seen_last[j] || s.centres[j].size() < 3) return false;
-        for (const auto& c : s.centres[j])
-          if ((c - s.centres[j].front()).norm() >= options_.rest_px) return false;
-      }
-      return true;
-    };
+    auto movers_at_rest = [&] { return hold.movers_at_rest(s.seen_last, s.centres, options_.rest_px); };
     const bool may_hold = options_.hold_resting &&
                           ((others_moving && (hold.on || (resting[k] && s.measured_at[k] == frame - 1))) ||
                            (hold.on && !movers_at_rest()));
-    auto hold_frame = [&] {
-      if (!hold.on) {
-        hold = State::Hold();
-        hold.on = true;
-        hold.movers.assign(models_.size(), false);
-        hold.mover_from.resize(models_.size());
-      }
-      hold.frames.push_back(frame);
-      for (size_t j = 0; j < models_.size(); ++j)
-        if (j != k && moving[j] && !hold.movers[j]) {
-          hold.movers[j] = true;
-          // From where it rested: its pose before this frame's move, or the last one kept.
-          hold.mover_from[j] = (s.world_T_camera * (s.previous[j] ? *s.previous[j] : s.camera_T_part[j])).translation();
-        }
+    // Each part's place in the world: where it rested before this frame's move (its pose a frame
+    // before, or the last one kept), or where it is now.
+    auto places = [&](bool before) {
+      std::vector<Eigen::Vector3d> p(models_.size());
+      for (size_t j = 0; j < p.size(); ++j)
+        p[j] = (s.world_T_camera * (before && s.previous[j] ? *s.previous[j] : s.camera_T_part[j])).translation();
+      return p;
     };
-    // Two of the parts that moved during the hold went the same way (each farther than
-    // hold_ride_min, their moves apart by less than hold_ride_tolerance of the longer).
-    auto movers_rode = [&] {
-      if (!hold.on) return false;
-      std::vector<Eigen::Vector3d> moves;
-      for (size_t j = 0; j < models_.size(); ++j)
-        if (hold.movers[j]) moves.push_back((s.world_T_camera * s.camera_T_part[j]).translation() - hold.mover_from[j]);
-      for (size_t a = 0; a < moves.size(); ++a)
-        for (size_t b = a + 1; b < moves.size(); ++b)
-          if (moves[a].norm() > options_.hold_ride_min && moves[b].norm() > options_.hold_ride_min &&
-              (moves[a] - moves[b]).norm() < options_.hold_ride_tolerance * std::max(moves[a].norm(), moves[b].norm()))
-            return true;
-      return false;
-    };
+    auto hold_frame = [&] { hold.hold(frame, k, moving, places(true)); };
+    auto movers_rode = [&] { return hold.movers_rode(places(false), options_.hold_ride_min, options_.hold_ride_tolerance); };
     auto end_hold = [&](bool borne_out, bool unmeasured) {
       if (!hold.on) return;
       hold.on = false;
