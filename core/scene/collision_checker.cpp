@@ -113,7 +113,7 @@ struct CollisionData::Workspace {
   std::unordered_map<std::uint64_t, MeshContactWitnesses> witnesses;
 
   // Robot pairs whose exact test waits until every cheap test of the query has had its say
-  // (Query::deferred); reused between queries.
+  // (Query::defer_exact); reused between queries.
   struct ExactTest {
     CollisionObjectd* a;
     const GeomInfo* ia;
@@ -357,6 +357,7 @@ struct CollisionChecker::Impl {
 
   void run(Query& q) const {
     CollisionVisitor v{*this, q, *q.data};
+    q.data->waiting.clear();  // none left by a query that threw
     visit_pairs(*q.data, *q.allowed, v);
     q.finish();
   }

@@ -71,7 +71,7 @@ public:
       return false;
     }
     if (fast && (fast_hit.first != fcl_hit.first || fast_hit.second != fcl_hit.second)) ++c.pair_mismatches;
-    return true;
+    return answer_only == fcl;
   }
 
   // `n` states (at least), of every kind, from `seed`.
