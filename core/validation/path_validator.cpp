@@ -75,7 +75,7 @@ struct SampleFacts {
   CollisionPair hit;
   std::set<GraspPair> held;
   std::vector<int> support_link;    // per object: -2 not placed, -1 on the world, else the robot link
-  std::vector<Pose> support_frame;  // per object: its support link's world pose (identity for the world)
+  PoseList support_frame;           // per object: its support link's world pose (identity for the world)
   int unplaced = -1;                // the first object neither grasped nor placed
 };
 
