@@ -351,6 +351,9 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     }
     s.centres[k].push_back(centre_in_image(k, r.camera_T_part));
     if (s.centres[k].size() > 3) s.centres[k].erase(s.centres[k].begin());
+    // Found at rest (at the same place in two frames): it rests there from now on, its depth and
+    // place held as a start frame's are, not drifting while three frames' measurements settle.
+    if (found_resting) s.centres[k].assign(3, s.centres[k].back());
     // Motion is carried on only between frames both seen: a part found again after a gap did
     // not move from its stale pose in one frame.
     if (seen_before)
@@ -540,6 +543,17 @@ RegionFrameResult ModelPoseTracker::search(const cv::Mat& image, int k, const Oc
 }
 
 std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k) const {
+  if (std::optional<RegionFrameResult> found = rest_search(image, k, options_.rest_search_radii, false)) return found;
+  // Not within the plain reach: the longer it has been lost, the farther it may have been
+  // carried before it was put down. Beyond the plain reach only on the evidence of a part in
+  // full view.
+  const int frames = std::max(state_->unseen[k] - options_.rest_search_growth_after, 0);
+  const double radii = std::min(options_.rest_search_radii + options_.rest_search_growth * frames, options_.rest_search_max_radii);
+  if (radii <= options_.rest_search_radii) return std::nullopt;
+  return rest_search(image, k, radii, true);
+}
+
+std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k, double radii, bool beyond) const {
   const State& s = *state_;
   const ContourModel& model = *contours_[k];
   const Pose& last = s.camera_T_part[k];
@@ -547,13 +561,15 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
   if (c.z() < 0.05) return std::nullopt;
   // Where its centre's image may be now: a grid around where it was last seen.
   const double radius_px = model.radius() * s.intrinsics.fx / c.z();
-  const double reach = std::max(options_.rest_search_radii * radius_px, 60.0);
+  const double reach = std::max(radii * radius_px, 60.0);
+  const double base_reach = std::max(options_.rest_search_radii * radius_px, 60.0);
   const double step = std::max(radius_px / options_.rest_search_density, 6.0);
   const Eigen::Vector2d at = centre_in_image(k, last) + Eigen::Vector2d(s.intrinsics.cx, s.intrinsics.cy);
   std::vector<Eigen::Vector2d> pixels;
   for (double dy = -reach; dy <= reach; dy += step)
     for (double dx = -reach; dx <= reach; dx += step) {
       const Eigen::Vector2d p = at + Eigen::Vector2d(dx, dy);
+      if (beyond && std::max(std::abs(dx), std::abs(dy)) <= base_reach) continue;  // searched already
       if (p.x() >= 0 && p.y() >= 0 && p.x() < s.image_size.width && p.y() < s.image_size.height) pixels.push_back(p);
     }
   // Turned about the vertical from its last rest: as it was last seen (a carried part is mostly
@@ -635,6 +651,10 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     const int visible = r.lines - r.hidden_lines;
     if (visible < options_.rest_visible_fraction * r.lines || r.used_lines < options_.rest_used_fraction * visible ||
         r.contrast < options_.rest_contrast * s.reference_contrast[k])
+      continue;
+    // Beyond the plain reach (grown with the time lost): only on the evidence of a part in full view.
+    if (beyond &&
+        (r.hidden_lines > 0.1 * r.lines || r.used_lines < 0.9 * r.lines || r.contrast < options_.search_contrast * s.reference_contrast[k]))
       continue;
     // Still standing on the support it was put on: not tilted off it, not lifted or sunk.
     const Eigen::Matrix3d world_R = s.world_T_camera.linear() * r.camera_T_part.linear();

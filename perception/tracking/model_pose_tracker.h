@@ -65,6 +65,15 @@ struct ModelTrackerOptions {
   // `rest_search_tries` tracked from (at the support's depth).
   bool rest_search = true;
   double rest_search_radii = 3.0;
+  // The longer it has been lost, the farther it may have been carried before it was put down
+  // (shelf_1 with the occluder: hidden at the start of the carry, put down 3.3 radii from where
+  // it was last seen): not found within that reach, it is looked for beyond it, out to
+  // `rest_search_growth` radii more a frame lost after the first `rest_search_growth_after`, up
+  // to `rest_search_max_radii`; taken there only in full view (at most a tenth of its lines
+  // hidden, nine tenths finding an edge, standing out as much as `search_contrast` asks).
+  double rest_search_growth = 0.05;
+  int rest_search_growth_after = 0;
+  double rest_search_max_radii = 6.0;
   int rest_search_turns = 12;           // over the whole turn, one of them the last seen turn
   double rest_search_density = 4.0;     // grid points per radius
   int rest_search_climbs = 12;          // best candidates moved and turned while they stand out more
@@ -152,6 +161,8 @@ private:
   // Part k looked for where it could have come to rest on the furniture (rest_search options);
   // the best candidate that passes the rules that judge it on its visible lines, if any.
   std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k) const;
+  // The search within `radii` of its radii (beyond: only outside the plain reach, on stricter evidence).
+  std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, double radii, bool beyond) const;
   // Part k, found at rest in `frame`, tracked back from there through the kept frames before it
   // while it is seen (contrast `bar`), filling its samples there.
   void follow_back(size_t k, int frame, double bar);
