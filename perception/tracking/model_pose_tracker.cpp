@@ -294,10 +294,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       if (hold.on) end_hold(movers_at_rest() && !movers_rode(), true);
     } else if (hold.on) {
       // Measured: still at its rest (within what a resting part's moves are held to), or not.
-      const double turn = Eigen::AngleAxisd(s.camera_T_part[k].linear().transpose() * r.camera_T_part.linear()).angle();
-      end_hold((centre_in_image(k, r.camera_T_part) - s.centres[k].back()).norm() < options_.rest_hold_px &&
-                   turn < options_.rest_hold_deg * M_PI / 180,
-               false);
+      end_hold(within_rest_hold(k, r.camera_T_part), false);
     }
     if (!is_seen(r)) {
       // Found elsewhere: only on clearer evidence than a frame tracked on.
@@ -344,10 +341,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       // A resting part stays put for moves within the measurement's own scatter (the image of
       // its centre within rest_hold_px, its turn within rest_hold_deg): only a real move breaks
       // the rest, and partly hidden parts do not creep.
-      const Eigen::Vector2d now = centre_in_image(k, r.camera_T_part);
-      const double turn = Eigen::AngleAxisd(s.camera_T_part[k].linear().transpose() * r.camera_T_part.linear()).angle();
-      if ((now - s.centres[k].back()).norm() < options_.rest_hold_px && turn < options_.rest_hold_deg * M_PI / 180)
-        r.camera_T_part = s.camera_T_part[k];
+      if (within_rest_hold(k, r.camera_T_part)) r.camera_T_part = s.camera_T_part[k];
     }
     s.centres[k].push_back(centre_in_image(k, r.camera_T_part));
     if (s.centres[k].size() > 3) s.centres[k].erase(s.centres[k].begin());
@@ -540,6 +534,13 @@ RegionFrameResult ModelPoseTracker::search(const cv::Mat& image, int k, const Oc
     if (i == 0 || r.contrast > best.contrast) best = r;
   }
   return best;
+}
+
+bool ModelPoseTracker::within_rest_hold(size_t k, const Pose& measured) const {
+  const State& s = *state_;
+  const double turn = Eigen::AngleAxisd(s.camera_T_part[k].linear().transpose() * measured.linear()).angle();
+  return (centre_in_image(k, measured) - s.centres[k].back()).norm() < options_.rest_hold_px &&
+         turn < options_.rest_hold_deg * M_PI / 180;
 }
 
 std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k) const {

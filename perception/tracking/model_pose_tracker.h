@@ -158,6 +158,9 @@ private:
   bool passed_in_front(size_t k, const std::vector<bool>& moving) const;
   // Part k looked for around its last pose: the best of the tracked candidates.
   RegionFrameResult search(const cv::Mat& image, int k, const OcclusionMap& map) const;
+  // Whether a measurement of resting part k lies within what its rest holds to (its centre's
+  // image within rest_hold_px of the last, its turn within rest_hold_deg): no move.
+  bool within_rest_hold(size_t k, const Pose& measured) const;
   // Part k looked for where it could have come to rest on the furniture (rest_search options);
   // the best candidate that passes the rules that judge it on its visible lines, if any.
   std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k) const;
