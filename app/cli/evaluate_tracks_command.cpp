@@ -85,17 +85,22 @@ int run_evaluate_tracks(const EvaluateTracksOptions& o) {
   // Where the rest poses are farthest from the cleaned ones, for the operator to look at.
   double worst = 0;
   std::string worst_at;
+  Eigen::Vector3d worst_offset = Eigen::Vector3d::Zero();
   for (const auto& m : e5.matches) {
     const auto& et = truth.events[m.truth];
     const auto& ed = found.demonstration.events[m.detected];
     for (size_t k = 0; k < truth.object_ids.size(); ++k) {
       if (!et.pose_frame(static_cast<int>(k)).empty() || !ed.pose_frame(static_cast<int>(k)).empty()) continue;
       const double mm = (et.poses[k].translation() - ed.poses[k].translation()).norm() * 1000;
-      if (mm > worst)
+      if (mm > worst) {
         worst = mm, worst_at = truth.object_ids[k] + " at the labelled event of frame " + std::to_string(et.frame);
+        worst_offset = (ed.poses[k].translation() - et.poses[k].translation()) * 1000;
+      }
     }
   }
-  if (!worst_at.empty()) std::cerr << "  farthest rest  " << worst << " mm: " << worst_at << "\n";
+  if (!worst_at.empty())
+    std::cerr << "  farthest rest  " << worst << " mm: " << worst_at << " (found - cleaned: x " << worst_offset.x()
+              << ", y " << worst_offset.y() << ", z " << worst_offset.z() << " mm)\n";
   for (const auto& d : found.demonstration.doubts)
     std::cerr << "  doubt: frames " << d.first_frame << "-" << d.last_frame << ": " << d.message << "\n";
   if (o.json) {

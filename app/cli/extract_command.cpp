@@ -56,6 +56,7 @@ int run_extract(const ExtractCliOptions& o) {
   options.board_extrinsics = o.board;
   if (o.events == "segments") options.events = perception::ExtractionOptions::Events::Segments;
   options.camera_source = camera_path;
+  options.scene = perception::marker_scene_world(scene, o.scene, o.data_dir);  // rests put onto its supports
   std::unique_ptr<perception::PoseTracker> tracker;
   if (o.tracker == "model") {
     // The parts' poses in the first frame: --init, else init.json beside the scene.

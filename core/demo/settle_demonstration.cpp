@@ -8,11 +8,14 @@ Demonstration settle_on_supports(const Scene& scene, Demonstration d, const Sett
   std::vector<std::vector<Eigen::Vector3d>> furniture;
   for (const auto& s : support_polygons(scene))
     if (s.robot_link < 0) furniture.push_back(s.vertices);
-  std::vector<std::vector<std::vector<Eigen::Vector3d>>> faces;
-  for (const auto& o : scene.objects) faces.push_back(object_contact_polygons(o));
+  // The demonstration's parts by id (an extraction lists them in its marker scene's order).
+  std::vector<std::vector<std::vector<Eigen::Vector3d>>> faces(d.object_ids.size());
+  for (size_t o = 0; o < d.object_ids.size(); ++o)
+    for (const auto& so : scene.objects)
+      if (so.id == d.object_ids[o]) faces[o] = object_contact_polygons(so);
   for (auto& e : d.events)
     for (size_t o = 0; o < e.poses.size() && o < faces.size(); ++o) {
-      if (!e.pose_frame(static_cast<int>(o)).empty()) continue;
+      if (faces[o].empty() || !e.pose_frame(static_cast<int>(o)).empty()) continue;
       if (auto snapped = snap_to_support(faces[o], e.poses[o], furniture, options.snap)) e.poses[o] = snapped->pose;
     }
   return d;

@@ -3,6 +3,7 @@
 // support, or tilted a fraction of a degree: enough for the planner to find the start in
 // collision. Settling moves every world pose that nearly rests on a furniture support onto it
 // (rest_pose.h's snap); poses far from any support, or on a robot link, are kept as they are.
+// Parts are matched to the scene's objects by id; a part the scene lacks is kept as it is.
 #include "core/demo/demonstration.h"
 #include "core/demo/rest_pose.h"
 #include "core/scene/scene.h"
@@ -10,7 +11,8 @@
 namespace demoplan {
 
 struct SettleOptions {
-  SnapOptions snap{0.1, 0.02, 0.001, 0.0};  // within ~6 degrees and 2 cm of a support
+  // Within ~6 degrees and 2 cm of a support.
+  SnapOptions snap{.max_tilt = 0.1, .max_distance = 0.02, .gap = 0.001, .max_outside = 0.0, .viewpoint = {}};
 };
 
 Demonstration settle_on_supports(const Scene& scene, Demonstration demonstration, const SettleOptions& options = {});

@@ -172,7 +172,7 @@ private:
     const auto faces = object_contact_polygons(scene_.objects[o]);
     for (size_t s = 0; s < surfaces_.size() && r.surface < 0; ++s) {
       if (surfaces_[s].robot_link != link) continue;
-      const PlacementResult p = check_placement(scene_, {surfaces_[s]}, identity_links_, o, r.out.demonstrated);
+      const PlacementCheck p = check_placement(scene_, {surfaces_[s]}, identity_links_, o, r.out.demonstrated);
       if (p.placed) r.surface = static_cast<int>(s), r.face = p.object_polygon;
     }
     for (size_t s = 0; s < surfaces_.size() && r.surface < 0; ++s) {

@@ -70,7 +70,7 @@ std::vector<std::vector<Eigen::Vector3d>> object_contact_polygons(const SceneObj
   return out;
 }
 
-PlacementResult check_placement(const Scene& scene, const std::vector<SupportPolygon>& supports,
+PlacementCheck check_placement(const Scene& scene, const std::vector<SupportPolygon>& supports,
                                 const PoseVector& robot_link_poses, int object, const Pose& pose,
                                 const PlacementTolerance& tol) {
   const auto faces = object_contact_polygons(scene.objects[object]);

@@ -35,7 +35,7 @@ struct PlacementTolerance {
   double upper = 0.002;
 };
 
-struct PlacementResult {
+struct PlacementCheck {
   bool placed = false;
   int support = -1;        // index into support_polygons(scene)
   int object_polygon = -1; // index into the object's contact polygons
@@ -46,7 +46,7 @@ std::vector<std::vector<Eigen::Vector3d>> object_contact_polygons(const SceneObj
 
 // Whether `object` at world pose `pose` rests on a support; robot surfaces are placed with
 // the robot's link poses.
-PlacementResult check_placement(const Scene& scene, const std::vector<SupportPolygon>& supports,
+PlacementCheck check_placement(const Scene& scene, const std::vector<SupportPolygon>& supports,
                                 const PoseVector& robot_link_poses, int object, const Pose& pose,
                                 const PlacementTolerance& tol = {});
 

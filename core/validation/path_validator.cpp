@@ -174,7 +174,7 @@ ValidationReport validate_path(const Scene& scene, const ValidationTask& task, c
               grasped = true;
             }
           }
-          const PlacementResult placed = check_placement(scene, supports, links, static_cast<int>(i),
+          const PlacementCheck placed = check_placement(scene, supports, links, static_cast<int>(i),
                                                          f.state.objects[i], {o.placement_lower, o.placement_upper});
           if (placed.placed) {
             const int l = supports[placed.support].robot_link;

@@ -52,6 +52,29 @@ bool move_together(const PoseTracks& tracks, const MotionInterval& a, const Moti
   return true;
 }
 
+// Whether two parts were moved alike over the frames both moved: each far enough for a carry,
+// their displacements apart by at most `fraction` of the longer. A tray that turns as it goes
+// parts their displacements by their separation times the turn; and the relative position in
+// one part's frame (move_together) swings by the separation times that part's orientation
+// error, centimetres for small parts a few metres from the camera. A hand dragging a second part
+// along moves it much less than the one it carries.
+bool displaced_alike(const PoseTracks& tracks, const MotionInterval& a, const MotionInterval& b, double fraction,
+                     double min_distance) {
+  const int f0 = std::max(a.start, b.start), f1 = std::min(a.end, b.end);
+  auto both_seen = [&](int f) { return tracks.samples[a.object][f].valid && tracks.samples[b.object][f].valid; };
+  int first = f0, last = f1;
+  while (first < last && !both_seen(first)) ++first;
+  while (last > first && !both_seen(last)) --last;
+  if (last - first < 2) return false;
+  auto displacement = [&](int object) {
+    return Eigen::Vector3d(tracks.samples[object][last].pose.translation() -
+                           tracks.samples[object][first].pose.translation());
+  };
+  const Eigen::Vector3d da = displacement(a.object), db = displacement(b.object);
+  const double longer = std::max(da.norm(), db.norm());
+  return std::min(da.norm(), db.norm()) >= min_distance && (da - db).norm() <= fraction * longer;
+}
+
 }  // namespace
 
 std::vector<MotionInterval> ContactAnalysis::motions_of(int object) const {
@@ -349,7 +372,9 @@ ContactAnalysis detect_contacts(const PoseTracks& tracks, const ContactDetectorO
       for (size_t y = x + 1; y < group.size(); ++y) {
         const auto& mx = all[group[x]];
         const auto& my = all[group[y]];
-        if (mx.object != my.object && overlaps(mx, my) && move_together(tracks, mx, my, o.co_motion_tolerance))
+        if (mx.object != my.object && overlaps(mx, my) && (move_together(tracks, mx, my, o.co_motion_tolerance) ||
+                                                      displaced_alike(tracks, mx, my, o.co_motion_displacement,
+                                                                      o.min_carry_distance)))
           together[x] = together[y] = true;
       }
     // The hand carries one part at a time: the parts that moved farthest, without overlaps.

@@ -7,7 +7,7 @@
 // still gives both events; when the hand hides the part just as it is set down (last seen
 // moving, next seen at rest) or picked up, the event is put inside that gap
 // (hidden_event_fraction). One part at a time: parts that move together, keeping their
-// relative poses, ride on a support (a tray) and make no events; of two parts moving at once
+// relative poses or moved alike, ride on a support (a tray) and make no events; of two parts moving at once
 // otherwise, the one that moved farther is the carried one.
 #include <vector>
 
@@ -31,6 +31,8 @@ struct ContactDetectorOptions {
   double sigma_factor = 3.0;        // and, seen through other markers than the rest pose was,
                                     // >= this times the sample's expected precision
   double co_motion_tolerance = 0.03;  // m, change of relative position of parts riding together
+  double co_motion_displacement = 0.25;  // or: their displacements apart by at most this fraction
+                                         // of the longer (the segmentation's ride_tolerance)
   double min_confidence = 0.5;      // samples below are ignored
   // Where in a gap a hidden release lies: last seen moving at a, first seen at rest at b, the
   // release at a + f (b - a); a hidden grasp at b - f (b - a). The hand that sets a part down

@@ -77,6 +77,11 @@ ExtractionResult extract_demonstration(const std::string& video_path, const Came
     fuse_hand_contacts(r.contacts, hand_contact_runs(hands, r.raw, bounds, camera, o.hands), r.raw, o.hands);
   }
   r.demonstration = build_demonstration(r.raw, r.contacts, task, o.contacts, &r.warnings);
+  if (o.scene) {
+    SettleOptions settle = o.settle;
+    settle.snap.viewpoint = r.world_T_camera.translation();
+    r.demonstration = settle_on_supports(*o.scene, std::move(r.demonstration), settle);
+  }
   r.smoothed = smooth_tracks(r.raw, r.contacts, o.contacts);
   r.frames = frames;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -6,6 +6,7 @@
 
 #include "core/cell/cell.h"
 #include "core/cell/cell_scene.h"
+#include "core/demo/benchmark_scene.h"
 #include "core/demo/benchmark_task.h"
 #include "core/error.h"
 #include "core/model/kinematics.h"
@@ -94,6 +95,19 @@ std::vector<FurnitureMesh> marker_scene_furniture_meshes(const MarkerScene& scen
   }
   if (scene.task.empty()) return {};
   return furniture_meshes(load_benchmark_task(data_dir, scene.task));
+}
+
+std::shared_ptr<const Scene> marker_scene_world(const MarkerScene& scene, const std::string& scene_file,
+                                                const std::string& data_dir) {
+  if (!scene.cell.empty()) {
+    const std::string cell_file = (std::filesystem::path(scene_file).parent_path() / scene.cell).string();
+    return std::make_shared<const Scene>(build_cell_scene(load_cell(cell_file), {.data_dir = data_dir}));
+  }
+  if (scene.task.empty()) return nullptr;
+  const BenchmarkTask task = load_benchmark_task(data_dir, scene.task);
+  std::string robot = scene.robot;
+  if (robot.empty() && !task.robot_pose_files.empty()) robot = task.robot_pose_files.begin()->first;
+  return std::make_shared<const Scene>(build_benchmark_scene(task, robot, scene.robot_pose));
 }
 
 std::vector<RenderMesh> marker_scene_part_meshes(const MarkerScene& scene, const std::string& scene_file,

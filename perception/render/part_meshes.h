@@ -2,10 +2,10 @@
 // The drawable meshes of a scene's parts, each in the part's own frame, and of its furniture, in
 // the world: what the synthetic video draws and what the model-based tracker matches against the
 // image (the furniture as what hides parts).
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
-
-#include <optional>
 
 #include "core/demo/benchmark_task.h"
 #include "core/model/robot_model.h"
@@ -28,6 +28,12 @@ RenderMesh geometry_render_mesh(const Geometry& geometry, TextureUse texture = T
 // scene file and the object that has no model.
 std::vector<RenderMesh> marker_scene_part_meshes(const MarkerScene& scene, const std::string& scene_file,
                                                  const std::string& data_dir);
+
+// The scene a marker scene shows, without visual meshes: the cell it names, or its benchmark
+// task with its robot at its pose (a task's scene that names no robot: the task's first). Null
+// when it names neither. Throws InputError for files that cannot be read.
+std::shared_ptr<const Scene> marker_scene_world(const MarkerScene& scene, const std::string& scene_file,
+                                                const std::string& data_dir);
 
 // One visual of a piece of furniture, placed in the world.
 struct FurnitureMesh {

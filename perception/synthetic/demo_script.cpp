@@ -5,6 +5,7 @@
 
 #include "core/demo/benchmark_demonstration.h"
 #include "core/error.h"
+#include "core/geometry/planar_motion.h"
 #include "core/geometry/se3.h"
 
 namespace demoplan::perception {
@@ -19,37 +20,6 @@ double carry_timing(double t) { return 0.5 * t + 0.5 * t * t * (3 - 2 * t); }
 bool differs(const Pose& a, const Pose& b) {
   return (a.translation() - b.translation()).norm() > 0.01 ||
          Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle() > 0.05;
-}
-
-// A rigid motion in the horizontal plane (yaw about a centre, plus a shift) taking the
-// centroid of `from` to that of `to` and turning it to fit them best.
-struct PlanarMotion {
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero(), shift = Eigen::Vector3d::Zero();
-  double yaw = 0.0;
-  Pose at(double s) const {
-    Pose T = Pose::Identity();
-    T.linear() = Eigen::AngleAxisd(s * yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-    T.translation() = centre + s * shift - T.linear() * centre;
-    return T;
-  }
-};
-
-PlanarMotion fit_planar_motion(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to) {
-  PlanarMotion m;
-  Eigen::Vector3d cf = Eigen::Vector3d::Zero(), ct = Eigen::Vector3d::Zero();
-  for (size_t i = 0; i < from.size(); ++i) cf += from[i], ct += to[i];
-  cf /= static_cast<double>(from.size());
-  ct /= static_cast<double>(to.size());
-  double sxx = 0, sxy = 0;
-  for (size_t i = 0; i < from.size(); ++i) {
-    const Eigen::Vector2d p = (from[i] - cf).head<2>(), q = (to[i] - ct).head<2>();
-    sxx += p.dot(q);
-    sxy += p.x() * q.y() - p.y() * q.x();
-  }
-  m.centre = cf;
-  m.shift = ct - cf;
-  m.yaw = from.size() > 1 ? std::atan2(sxy, sxx) : 0.0;
-  return m;
 }
 
 Eigen::AlignedBox3d world_box(const Eigen::AlignedBox3d& box, const Pose& pose) {

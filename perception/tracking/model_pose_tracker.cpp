@@ -43,6 +43,15 @@ struct ModelPoseTracker::State {
   std::vector<int> unseen;                     // frames each part has not been seen in, in a row
   std::vector<int> measured_at;                // the last frame each part's pose was measured in (-1: none)
   std::vector<RestHold> holds;                 // each part's, while it is held at its rest (rest_hold.h)
+  std::vector<std::optional<Pose>> rest_world;  // each part's pose (world) when last measured at rest
+  std::vector<int> left_rest;                   // the frame that rest broke in (-1: not since)
+  // Each part's ride (ride_prediction.h), while it may have ridden: the riders, and its own rest
+  // (world) their motion is applied to.
+  struct Riding {
+    Ride ride;
+    Pose rest;
+  };
+  std::vector<std::optional<Riding>> rides;
   std::deque<std::pair<int, cv::Mat>> recent;  // the last frames while a part was not seen (follow_back)
   PoseTracks tracks;
   bool started = false;  // the init frame has been seen
@@ -96,6 +105,9 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.unseen.assign(models_.size(), 0);
   s.measured_at.assign(models_.size(), -1);
   s.holds.assign(models_.size(), RestHold());
+  s.rest_world.assign(models_.size(), std::nullopt);
+  s.left_rest.assign(models_.size(), -1);
+  s.rides.assign(models_.size(), std::nullopt);
   if (options_.rest_search) s.supports = support_levels(furniture_);
   if (!furniture_.empty()) {
     Rasterizer r = occlusion_rasterizer();
@@ -187,6 +199,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     // Parts rest where a demonstration starts: each holds its depth from the first frame on.
     for (size_t k = 0; k < models_.size(); ++k) s.centres[k].assign(3, centre_in_image(k, s.camera_T_part[k]));
     for (size_t k = 0; k < models_.size(); ++k) s.rest_rotation.push_back(s.world_T_camera.linear() * s.camera_T_part[k].linear());
+    for (size_t k = 0; k < models_.size(); ++k) s.rest_world[k] = s.world_T_camera * s.camera_T_part[k];
     for (size_t k = 0; k < models_.size(); ++k)
       s.reference_contrast[k] = track_region(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
                                              static_cast<int>(k), options_.region).contrast;
@@ -205,13 +218,16 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       resting[k] = (s.centres[k][i] - s.centres[k].front()).norm() < options_.rest_px;
     moving[k] = s.seen_last[k] && !resting[k];
   }
+  if (options_.ride_prediction) watch_rides(frame, resting);
   std::vector<PoseObservation> seen;
   std::vector<bool> learn(models_.size(), false), learn_part(models_.size(), false);
   // Nearest first: a part a hand takes in this frame counts as moving for the parts behind it
-  // in the same frame, before its (and the hand's) pull on their lines drags them along.
+  // in the same frame, before its (and the hand's) pull on their lines drags them along. A part
+  // that may have ridden comes last, once its riders are where they are in this frame.
   std::vector<size_t> order(models_.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    if (s.rides[a].has_value() != s.rides[b].has_value()) return !s.rides[a].has_value();
     return (s.camera_T_part[a] * contours_[a]->centre()).z() < (s.camera_T_part[b] * contours_[b]->centre()).z();
   });
   for (const size_t k : order) {
@@ -252,6 +268,34 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
         held.confidence = options_.held_confidence;
       }
     };
+    const double bar = std::max(options_.lost_contrast, options_.relative_contrast * s.reference_contrast[k]);
+    auto is_seen = [&](const RegionFrameResult& x) {
+      return x.contrast >= bar && x.lines > 0 && x.used_lines >= options_.lost_used_fraction * x.lines;
+    };
+    // While the parts it rested with ride away, it goes as they go (ride_prediction.h). Not
+    // measured since the last frame, it is looked for there before it is held at (or looked for
+    // around) the rest it left.
+    std::optional<Pose> ride_start;
+    if (s.rides[k])
+      if (const std::optional<Pose> M = s.rides[k]->ride.motion(ride_parts(frame), ride_rules()))
+        ride_start = s.world_T_camera.inverse() * *M * s.rides[k]->rest;
+    // Where the ride took it is a prediction from other parts, not a guess among many places as
+    // the search's: seen there as a tracked frame is, on half its lines as a find.
+    auto found_riding = [&](const RegionFrameResult& x) {
+      return is_seen(x) && x.used_lines >= options_.search_used_fraction * x.lines;
+    };
+    // Found by the search (elsewhere than where it was tracked from): on clearer evidence still.
+    auto found_elsewhere = [&](const RegionFrameResult& x) {
+      return x.contrast >= options_.search_contrast * s.reference_contrast[k] && found_riding(x);
+    };
+    std::optional<RegionFrameResult> riding;
+    if (ride_start && s.measured_at[k] < frame - 1)
+      if (RegionFrameResult x = track_region(image, s.intrinsics, *contours_[k], s.colors[k], *ride_start, map, part,
+                                             options_.region);
+          found_riding(x))
+        riding = x;
+    // Found riding: it moved, it does not rest where it was.
+    if (riding) resting[k] = false;
     // A resting part that a moving one passes in front of stays where it is, unmeasured: what
     // is left of its silhouette is too little to tell a move from the occluder's pull.
     if (resting[k] && passed_in_front(k, moving)) {
@@ -266,16 +310,13 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       const Eigen::Vector3d ray = now.normalized();
       start.translation() += options_.prediction * (step - step.dot(ray) * ray);
     }
-    // At rest a part keeps its depth.
-    RegionFrameResult r = track_region(image, s.intrinsics, *contours_[k], s.colors[k], start, map, part,
-                                       options_.region, resting[k], points[k]);
-    // Not seen well enough (an occluder over it, out of the picture, faster than the lines
-    // reach): look around its last pose. The bar is relative to how the part has stood out so
-    // far, as parts differ from their surroundings more or less.
-    const double bar = std::max(options_.lost_contrast, options_.relative_contrast * s.reference_contrast[k]);
-    auto is_seen = [&](const RegionFrameResult& x) {
-      return x.contrast >= bar && x.lines > 0 && x.used_lines >= options_.lost_used_fraction * x.lines;
-    };
+    if (ride_start && !resting[k]) start = *ride_start;
+    // At rest a part keeps its depth. Not seen well enough (an occluder over it, out of the
+    // picture, faster than the lines reach): look around its last pose. The bar is relative to
+    // how the part has stood out so far, as parts differ from their surroundings more or less.
+    RegionFrameResult r = riding ? *riding
+                                 : track_region(image, s.intrinsics, *contours_[k], s.colors[k], start, map, part,
+                                                options_.region, resting[k], points[k]);
     const bool mostly_hidden = resting[k] && r.hidden_lines > options_.rest_hidden_fraction * r.lines;
     if (!is_seen(r) || mostly_hidden) {
       if (may_hold) {
@@ -296,11 +337,17 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       // Measured: still at its rest (within what a resting part's moves are held to), or not.
       end_hold(within_rest_hold(k, r.camera_T_part), false);
     }
+    auto beyond_radius = [&](const Pose& T) {
+      const Eigen::Vector3d c = s.camera_T_part[k] * contours_[k]->centre();
+      return (centre_in_image(k, T) - centre_in_image(k, s.camera_T_part[k])).norm() >
+             contours_[k]->radius() * s.intrinsics.fx / c.z();
+    };
     if (!is_seen(r)) {
-      // Found elsewhere: only on clearer evidence than a frame tracked on.
-      const RegionFrameResult found_again = search(image, part, map);
-      if (found_again.contrast >= options_.search_contrast * s.reference_contrast[k] && is_seen(found_again) &&
-          found_again.used_lines >= options_.search_used_fraction * found_again.lines)
+      // Not farther than its radius from a rest it was seen at in the last frame: a part taken
+      // from rest has not got that far yet, and what the search finds there is what passed in
+      // front of it (waiter_0: the sugar box carried past the cracker box, taken for it 30 cm off).
+      if (const RegionFrameResult found_again = search(image, part, map);
+          found_elsewhere(found_again) && !(resting[k] && s.seen_last[k] && beyond_radius(found_again.camera_T_part)))
         r = found_again;
     }
     // Still not found: perhaps put down where it could rest; taken once found at the same place
@@ -347,16 +394,28 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     if (s.centres[k].size() > 3) s.centres[k].erase(s.centres[k].begin());
     // Found at rest (at the same place in two frames): it rests there from now on, its depth and
     // place held as a start frame's are, not drifting while three frames' measurements settle.
-    if (found_resting) s.centres[k].assign(3, s.centres[k].back());
+    // So does a part found where a ride that is over (its riders at rest) took it.
+    const bool ride_over = riding && std::all_of(s.rides[k]->ride.riders().begin(), s.rides[k]->ride.riders().end(),
+                                                 [&](size_t j) { return resting[j] && s.seen_last[j]; });
+    if (found_resting || ride_over) s.centres[k].assign(3, s.centres[k].back());
     // Motion is carried on only between frames both seen: a part found again after a gap did
     // not move from its stale pose in one frame.
-    if (seen_before)
+    if (seen_before && !riding)
       s.previous[k] = s.camera_T_part[k];
     else
       s.previous[k].reset();
     // Its rest broke (not in the start frame, where the parts rest: a first measurement's
-    // correction is no move).
-    if (resting[k] && frame > init_.frame && !r.camera_T_part.isApprox(s.camera_T_part[k])) moving[k] = true;
+    // correction is no move), or it stays there; found riding, it moves.
+    if (resting[k] && frame > init_.frame && !r.camera_T_part.isApprox(s.camera_T_part[k])) {
+      moving[k] = true;
+      s.left_rest[k] = frame;
+    } else if (resting[k] || found_resting || ride_over) {
+      s.rest_world[k] = s.world_T_camera * r.camera_T_part;
+      s.left_rest[k] = -1;
+    }
+    if (riding && !ride_over) moving[k] = true;
+    // Seen at rest, it rides no more.
+    if ((!riding && (resting[k] || found_resting)) || ride_over) s.rides[k].reset();
     s.camera_T_part[k] = r.camera_T_part;
     // Not from a find at rest: if it were wrong, the colours learnt there would hold it there.
     learn[k] = !found_resting && r.contrast >= options_.learn_contrast * s.reference_contrast[k];
@@ -668,6 +727,45 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     if (!best || r.used_lines * r.contrast > best->used_lines * best->contrast) best = r;
   }
   return best;
+}
+
+void ModelPoseTracker::watch_rides(int frame, const std::vector<bool>& resting) {
+  State& s = *state_;
+  std::optional<std::vector<RidePart>> ride_now;  // (only when a part is not measured)
+  for (size_t k = 0; k < models_.size(); ++k) {
+    if (!s.rides[k] && (!resting[k] || s.measured_at[k] >= frame - 1 || frame <= init_.frame)) continue;
+    if (!ride_now) ride_now = ride_parts(frame);
+    if (s.rides[k] && s.rides[k]->ride.parted(*ride_now, ride_rules())) s.rides[k].reset();
+    if (s.rides[k] || !resting[k] || s.measured_at[k] >= frame - 1) continue;
+    const Pose rest = s.world_T_camera * s.camera_T_part[k];
+    const double bottom = (rest * contours_[k]->centre()).z() -
+                          centre_height(models_[k].mesh, contours_[k]->centre(), rest.linear());
+    if (std::optional<Ride> ride =
+            Ride::detect(k, rest * contours_[k]->centre(), bottom, contours_[k]->radius(), *ride_now, ride_rules()))
+      s.rides[k] = State::Riding{std::move(*ride), rest};
+  }
+}
+
+RideRules ModelPoseTracker::ride_rules() const {
+  return {options_.hold_ride_min, options_.ride_tolerance, options_.ride_tolerance_fraction,
+          options_.ride_height,   options_.ride_radii,     options_.ride_start_frames};
+}
+
+std::vector<RidePart> ModelPoseTracker::ride_parts(int frame) const {
+  const State& s = *state_;
+  std::vector<RidePart> parts(models_.size());
+  for (size_t j = 0; j < parts.size(); ++j) {
+    const Eigen::Vector3d& c = contours_[j]->centre();
+    RidePart& p = parts[j];
+    if (s.rest_world[j]) {
+      p.rest = *s.rest_world[j] * c;
+      p.rest_bottom = p.rest->z() - centre_height(models_[j].mesh, c, s.rest_world[j]->linear());
+    }
+    p.left_rest = s.left_rest[j];
+    p.tracked = s.measured_at[j] >= frame - 1;
+    p.now = s.world_T_camera * s.camera_T_part[j] * c;
+  }
+  return parts;
 }
 
 PoseTracks ModelPoseTracker::finish() {

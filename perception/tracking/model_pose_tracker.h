@@ -11,7 +11,9 @@
 // A part found so is followed back into the frames it was missed in. A part seen in the last
 // two frames is predicted to go on as it moved (a carry). Parts are tracked nearest first; a
 // resting part that is not measured while another moves is held at its rest (not searched for)
-// and reported there only if that is borne out (ModelTrackerOptions::hold_resting).
+// and reported there only if that is borne out (ModelTrackerOptions::hold_resting); one that
+// parts resting beside it rode away from is looked for where the same ride would have taken it
+// (ModelTrackerOptions::ride_prediction).
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,6 +29,7 @@
 #include "perception/tracking/contour_model.h"
 #include "perception/tracking/pose_tracker.h"
 #include "perception/tracking/region_pose.h"
+#include "perception/tracking/ride_prediction.h"
 #include "perception/tracking/support_search.h"
 #include "perception/tracking/surface_flow.h"
 #include "perception/tracking/tracker_init.h"
@@ -117,6 +120,22 @@ struct ModelTrackerOptions {
   // have ridden with them, and the hold is not borne out by their rest.
   double hold_ride_min = 0.05;  // m
   double hold_ride_tolerance = 0.3;
+  // A part not measured at its rest (held there, or lost from there) while at least two parts
+  // left their rests together (within `ride_start_frames` of each other) and moved as one rigid
+  // body (each farther than hold_ride_min; the best rigid motion in the horizontal plane leaves
+  // at most `ride_tolerance` plus `ride_tolerance_fraction` of the longest move), one of them
+  // from beside it (the same support: its lowest point within `ride_height` of the part's, or
+  // its centre within `ride_radii` of the part's radii), rode with them on a tray or a board
+  // that is no furniture (ride_prediction.h): it is looked for at its rest moved by that motion
+  // in every frame it is not measured, until it is seen at rest or they part, and taken there
+  // when seen as in a tracked frame with half its lines finding an edge; found there after the
+  // ride (its riders at rest), it rests there at once.
+  bool ride_prediction = true;
+  double ride_height = 0.03;  // m
+  double ride_radii = 4.0;
+  int ride_start_frames = 3;
+  double ride_tolerance = 0.03;  // m
+  double ride_tolerance_fraction = 0.1;
   double light_tolerance = 0.05;      // a frame whose light drifted further is brought back (light_correction.h)
   // On the start frame: the part segmented around its start (GrabCut), and the start refined on
   // that segmentation until it stays (at most this many rounds at its depth, as many free).
@@ -166,6 +185,13 @@ private:
   std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k) const;
   // The search within `radii` of its radii (beyond: only outside the plain reach, on stricter evidence).
   std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, double radii, bool beyond) const;
+  // A part not measured at its rest since the last frame, while parts that rested beside it
+  // left together as one body, may have ridden with them: its ride is noted; a ride whose
+  // riders went apart no longer tells where it is, and is dropped.
+  void watch_rides(int frame, const std::vector<bool>& resting);
+  // Each part as a ride's detection sees it in `frame` (ride_prediction.h): tracked when measured in it or the last.
+  std::vector<RidePart> ride_parts(int frame) const;
+  RideRules ride_rules() const;
   // Part k, found at rest in `frame`, tracked back from there through the kept frames before it
   // while it is seen (contrast `bar`), filling its samples there.
   void follow_back(size_t k, int frame, double bar);

@@ -71,6 +71,9 @@ Pass correspondence_pass(const cv::Mat& image, const PinholeIntrinsics& K, const
   const int N = o.line_samples, W = std::min(o.window, N - 1), M = N - W;
   std::vector<float> pf(2 * N);
   std::vector<double> log_p(2 * M + 1);
+  // The smoothed step at each offset of a sample from a candidate edge (the same for every line).
+  std::vector<double> step(2 * W);
+  for (int d = -W; d < W; ++d) step[d + W] = 0.5 - o.step_amplitude * std::tanh((d + 0.5) / (2.0 * o.step_slope));
   for (const auto& cp : view.points) {
     Projected p;
     if (!project(cp, T, K, p)) continue;
@@ -96,7 +99,7 @@ Pass correspondence_pass(const cv::Mat& image, const PinholeIntrinsics& K, const
       for (int i = k - W; i < k + W; ++i) {
         const double x = (i + 0.5) * scale;
         if (x < -inner_px || x > outer_px + scale) continue;  // beyond the silhouette's own extent
-        const double hf = 0.5 - o.step_amplitude * std::tanh((i + 0.5 - k) / (2.0 * o.step_slope));
+        const double hf = step[i - k + W];
         const double f = pf[i + N];
         s += std::log(hf * f + (1.0 - hf) * (1.0 - f));
       }

@@ -105,7 +105,7 @@ TEST(DeckPlacement, ChosenPosesRestOnTheDeckByThePlacementTest) {
     forward_kinematics(w.scene.robot.model, q, w.scene.robot.base, links);
     const int deck = w.scene.robot.model.link_index("kmr_link");
     for (const auto& r : w.report.rests) {
-      const PlacementResult p = check_placement(w.scene, supports, links, r.object, links[deck] * r.chosen);
+      const PlacementCheck p = check_placement(w.scene, supports, links, r.object, links[deck] * r.chosen);
       ASSERT_TRUE(p.placed) << w.scene.objects[r.object].id;
       EXPECT_EQ(supports[p.support].name, "robot/kmr_surface");
     }

@@ -74,7 +74,7 @@ TEST(RestingPoseSampler, PosesRestOnSupportsAnywhereAndTurnedAnyWay) {
     const auto pose = sampler.sample(0, rng);
     if (!pose) continue;
     ++placed;
-    const PlacementResult r = check_placement(p.scene, supports, {}, 0, *pose);
+    const PlacementCheck r = check_placement(p.scene, supports, {}, 0, *pose);
     ASSERT_TRUE(r.placed) << "sample " << k;
     used_supports.insert(r.support);
     const double yaw = std::atan2((*pose).linear()(1, 0), (*pose).linear()(0, 0));

@@ -180,6 +180,26 @@ TEST(ContactDetector, PartsRidingOnATrayMakeNoEvents) {
   EXPECT_EQ(a.transports.size(), 2u);
 }
 
+TEST(ContactDetector, PartsOnATurningTrayRideEvenWithOrientationErrors) {
+  // waiter_0 without markers: two small parts 0.8 m apart ride a tray that goes 1.1 m and turns
+  // 10 degrees; the far part's orientation estimate wobbles by 3 degrees, which swings the other
+  // part's position in its frame by 4 cm, beyond co_motion_tolerance.
+  PoseTracks t = make_tracks(100, {at(0.4, 0, 0.8), at(-0.4, 0, 0.8)}, {});
+  for (int f = 30; f < 100; ++f) {
+    const double s = std::min(1.0, (f - 30) / 30.0);
+    const Pose ride = at(0, 1.1 * s, 0, 10.0 * M_PI / 180 * s);
+    for (int k = 0; k < 2; ++k) t.samples[k][f].pose = ride * t.samples[k][f].pose;
+    const double wobble = (f % 2 ? 3.0 : -3.0) * M_PI / 180;
+    t.samples[0][f].pose.linear() = t.samples[0][f].pose.linear() * Eigen::AngleAxisd(wobble, Eigen::Vector3d::UnitZ());
+  }
+  const ContactAnalysis a = detect_contacts(t);
+  EXPECT_TRUE(a.carries.empty());
+  EXPECT_EQ(a.transports.size(), 2u);
+  ContactDetectorOptions relative_only;
+  relative_only.co_motion_displacement = 0.0;
+  EXPECT_EQ(detect_contacts(t, relative_only).carries.size(), 1u);  // without the displacement rule: a carry
+}
+
 TEST(ContactDetector, ShortExcursionsAndBadFitsAreIgnored) {
   PoseTracks t = make_tracks(80, {at(0, 0, 0.8)}, {});
   for (int f = 30; f < 33; ++f) t.samples[0][f].pose.translation().x() += 0.06;  // a 3-frame glitch

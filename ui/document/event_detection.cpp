@@ -52,6 +52,7 @@ bool EventDetection::start() {
   job.markers = doc_->media()->markersFile();
   for (const auto& o : doc_->scene().objects) job.object_ids.push_back(o.id);
   job.task = doc_->sceneReference().is_cell() ? doc_->scene().name : doc_->sceneReference().task;
+  job.scene = doc_->sharedScene();
   if (model_tracker_) {
     job.model_tracker = true;
     job.data_dir = doc_->dataDir();

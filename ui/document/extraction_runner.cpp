@@ -47,6 +47,7 @@ bool ExtractionRunner::start(ExtractionJob job) {
       const perception::Camera camera = perception::load_camera(job.camera);
       perception::ExtractionOptions options;
       options.camera_source = job.camera;
+      options.scene = job.scene;
       options.cancel = &cancel;
       int last_percent = -1;
       options.progress = [&](int done, int total) {

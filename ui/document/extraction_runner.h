@@ -16,6 +16,7 @@ struct ExtractionJob {
   std::string video, camera, markers;  // files
   std::vector<std::string> object_ids;  // the scene's parts, in its order
   std::string task;
+  std::shared_ptr<const Scene> scene;  // the project's: rests are put onto its supports
   // The model-based tracker (no markers): the parts' meshes from the task or cell the marker
   // scene names (in `data_dir`), started from `init` (`init_source` names it in messages).
   bool model_tracker = false;
