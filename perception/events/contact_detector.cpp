@@ -230,10 +230,10 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     return tail;
   };
   auto rest_centre = [&]() { return centre_of(recent_rest([](const PoseSample&) { return true; })); };
-  // The centre of moving[end - min_rest_frames, end) when those samples sit still about it.
-  auto still_window = [&](int end) -> std::optional<Pose> {
+  // The centre of moving[end - count, end) (count: min_rest_frames) when those samples sit still about it.
+  auto still_window = [&](int end, int count = 0) -> std::optional<Pose> {
     std::vector<const PoseSample*> window;
-    for (int k = end - o.min_rest_frames; k < end; ++k) window.push_back(&at(moving[k]));
+    for (int k = end - (count > 0 ? count : o.min_rest_frames); k < end; ++k) window.push_back(&at(moving[k]));
     const Pose centre = centre_of(window);
     for (const auto* w : window)
       if (!still(*w, centre, same_view(*w, *window.back()))) return std::nullopt;
@@ -281,6 +281,12 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
       // Samples that sat still among themselves right before the first one beyond the rest are
       // the rest's last frames, seen through other or partly hidden markers (the hand arriving).
       if (first_beyond >= o.min_rest_frames && still_window(first_beyond)) last_rest = moving[first_beyond - 1];
+      // So are fewer of them, seen in a row, when the part was hidden next (the hand that took it
+      // hid it): an estimate that jumped as the hand arrived, then sat still until it went.
+      else if (first_beyond >= o.min_moving_frames && frames[moving[first_beyond]] - frames[moving[first_beyond - 1]] > 1 &&
+               frames[moving[first_beyond - 1]] - frames[moving[0]] == first_beyond - 1 && still_window(first_beyond, first_beyond) &&
+               !drifting(0, first_beyond))
+        last_rest = moving[first_beyond - 1];
       cur.start = frames[last_rest];
       // A part hidden just before it moved: its grasp frame is uncertain.
       const int gap = frames[moving.front()] - frames[last_rest];

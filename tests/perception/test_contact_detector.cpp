@@ -119,6 +119,23 @@ TEST(ContactDetector, EventsHiddenByTheHandLieInsideTheGap) {
   EXPECT_EQ(a.carries[0].start, 27 - 8);  // 0.62 of the 13 frames hidden before it was seen moving
 }
 
+TEST(ContactDetector, AnEstimateThatJumpsAsTheHandArrivesIsStillTheRest) {
+  // The hand arriving turns the estimate 3 degrees at 17 (waiter_0's sugar box without
+  // markers); it sits there until the hand hides the part at 20 and is seen moving from 30 on.
+  PoseTracks t = make_tracks(100, {at(0, 0, 0.8)}, {{0, 20, 60, at(0.5, 0.2, 0.8)}});
+  for (int f = 17; f < 20; ++f) t.samples[0][f].pose = at(0.0015, 0, 0.8, 3.0 * M_PI / 180);
+  for (int f = 20; f < 30; ++f) t.samples[0][f].valid = false;
+  ContactAnalysis a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_EQ(a.carries[0].start, 19);  // its last frame at rest, not the last before the jump (16)
+  EXPECT_EQ(a.carries[0].end, 60);
+  // Samples that rise 2 mm a frame (6-10 mm up) before the gap are the start of a slow lift, not a rest.
+  for (int f = 17; f < 20; ++f) t.samples[0][f].pose = at(0, 0, 0.804 + 0.002 * (f - 16));
+  a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_EQ(a.carries[0].start, 16);
+}
+
 TEST(ContactDetector, ACarryNeverSeenToEndIsSaid) {
   // Put down where the camera cannot see it: last seen moving at 49, never again.
   PoseTracks t = make_tracks(100, {at(0, 0, 0.8)}, {{0, 20, 60, at(0.5, 0.2, 0.8)}});
