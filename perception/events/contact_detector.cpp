@@ -281,11 +281,10 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
       // Samples that sat still among themselves right before the first one beyond the rest are
       // the rest's last frames, seen through other or partly hidden markers (the hand arriving).
       if (first_beyond >= o.min_rest_frames && still_window(first_beyond)) last_rest = moving[first_beyond - 1];
-      // So are fewer of them, seen in a row, when the part was hidden next (the hand that took it
-      // hid it): an estimate that jumped as the hand arrived, then sat still until it went.
-      else if (first_beyond >= o.min_moving_frames && frames[moving[first_beyond]] - frames[moving[first_beyond - 1]] > 1 &&
-               frames[moving[first_beyond - 1]] - frames[moving[0]] == first_beyond - 1 && still_window(first_beyond, first_beyond) &&
-               !drifting(0, first_beyond))
+      // So are fewer of them (as many as confirm a move), seen in a row and not drifting: an
+      // estimate that jumped as the hand arrived, then sat still until the hand took the part.
+      else if (first_beyond >= o.min_moving_frames && frames[moving[first_beyond - 1]] - frames[moving[0]] == first_beyond - 1 &&
+               still_window(first_beyond, first_beyond) && !drifting(0, first_beyond))
         last_rest = moving[first_beyond - 1];
       cur.start = frames[last_rest];
       // A part hidden just before it moved: its grasp frame is uncertain.
