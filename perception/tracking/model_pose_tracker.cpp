@@ -346,8 +346,16 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       // Not farther than its radius from a rest it was seen at in the last frame: a part taken
       // from rest has not got that far yet, and what the search finds there is what passed in
       // front of it (waiter_0: the sugar box carried past the cracker box, taken for it 30 cm off).
+      // Seen in the last frame and found within its radius with nearly all its lines on an
+      // edge, it is taken as a tracked frame is: a part just lifted stands out less against
+      // what is behind it now than the bar for a find elsewhere asks (waiter_0's sugar box).
+      auto found_near = [&](const RegionFrameResult& x) {
+        return s.seen_last[k] && is_seen(x) && x.used_lines >= options_.near_used_fraction * x.lines &&
+               !beyond_radius(x.camera_T_part);
+      };
       if (const RegionFrameResult found_again = search(image, part, map);
-          found_elsewhere(found_again) && !(resting[k] && s.seen_last[k] && beyond_radius(found_again.camera_T_part)))
+          (found_elsewhere(found_again) && !(resting[k] && s.seen_last[k] && beyond_radius(found_again.camera_T_part))) ||
+          found_near(found_again))
         r = found_again;
     }
     // Still not found: perhaps put down where it could rest; taken once found at the same place

@@ -60,6 +60,9 @@ struct ModelTrackerOptions {
   int search_tries = 3;
   double search_contrast = 0.9;   // of the running mean: a part found by the search
   double search_used_fraction = 0.5;  // of its lines finding an edge: a part found by the search
+  // Found within its radius of where it was seen in the last frame, a tracked frame's contrast
+  // is enough when this fraction of its lines find an edge (> 1: never).
+  double near_used_fraction = 0.85;
   // A part still not found is looked for where it could have come to rest (a carried part is
   // put down, often half behind the furniture, and the search at its last depth misses it):
   // standing on one of the furniture's supports as at its last rest, turned about the vertical

@@ -240,6 +240,41 @@ TEST(ModelTracker, FollowsThePartsOfAVideoWithoutMarkers) {
   fs::remove_all(dir);
 }
 
+// waiter_0 without markers: the sugar box, lifted fast off the tray (its first frame up 37 px,
+// before the arm's grey floor instead of the tray) and put on the shelf's top 25 cm higher in
+// the image, is followed through the carry: its release within 3 frames of the truth's (104),
+// at a rest within 15 mm of the truth's. (Taken by the search only on a find elsewhere's
+// clearer contrast, it was lost at the lift and found at 110 on another board 366 mm off.)
+TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelf) {
+  const fs::path dir = fs::temp_directory_path() / ("demoplan_model_tracker_waiter_" + std::to_string(::getpid()));
+  SynthOptions o;
+  o.data_dir = DEMOPLAN_DATA_DIR;
+  o.task = "waiter_0";
+  o.robot = "kmr_iiwa";
+  o.part_markers = false;
+  const SynthOutput s = write_synthetic_demonstration(o, dir.string());
+  const MarkerScene scene = load_marker_scene(s.scene);
+  const auto tracker = make_model_tracker(scene, s.scene, DEMOPLAN_DATA_DIR, load_tracker_init(s.init), s.init);
+  ExtractionOptions eo;
+  eo.scene = marker_scene_world(scene, s.scene, DEMOPLAN_DATA_DIR);
+  const Demonstration d = extract_demonstration(s.video, load_camera(s.camera), *tracker, scene.task, eo).demonstration;
+  const Demonstration truth = load_demonstration(s.truth);
+  const auto release_after = [](const Demonstration& x, int frame) -> const ContactEvent* {
+    const auto sugar = std::find(x.object_ids.begin(), x.object_ids.end(), "YCBV_03") - x.object_ids.begin();
+    for (const auto& e : x.events)
+      if (e.object == sugar && e.type == EventType::Release && e.frame > frame) return &e;
+    return nullptr;
+  };
+  const ContactEvent* detected = release_after(d, 90);
+  const ContactEvent* expected = release_after(truth, 90);
+  ASSERT_TRUE(expected);
+  ASSERT_TRUE(detected) << "the sugar box's last release was not detected";
+  EXPECT_LE(std::abs(detected->frame - expected->frame), 3);
+  const auto sugar = static_cast<size_t>(detected->object);
+  EXPECT_LT((detected->poses[sugar].translation() - expected->poses[sugar].translation()).norm(), 0.015);
+  fs::remove_all(dir);
+}
+
 // A part tracked within 3 mm in frames 0-9, never reported under the board in frames 10-19:
 // the first frame from 20 on it is reported in again (-1: none).
 int found_after_the_board(const PoseTracks& tracks, const std::vector<Pose>& truth) {
