@@ -52,7 +52,8 @@ struct ModelPoseTracker::State {
     Pose rest;
   };
   std::vector<std::optional<Riding>> rides;
-  std::deque<std::pair<int, cv::Mat>> recent;  // the last frames while a part was not seen (follow_back)
+  std::deque<std::pair<int, cv::Mat>> recent;  // the last frames (follow_back, date_rest_back)
+  std::vector<bool> was_resting;               // each part rested in the last frame
   PoseTracks tracks;
   bool started = false;  // the init frame has been seen
 };
@@ -107,6 +108,7 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.holds.assign(models_.size(), RestHold());
   s.rest_world.assign(models_.size(), std::nullopt);
   s.left_rest.assign(models_.size(), -1);
+  s.was_resting.assign(models_.size(), true);
   s.rides.assign(models_.size(), std::nullopt);
   if (options_.rest_search) s.supports = support_levels(furniture_);
   if (!furniture_.empty()) {
@@ -438,9 +440,14 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     s.measured_at[k] = frame;
     seen.push_back({part, sample});
     if (found_resting) follow_back(k, frame, bar);
+    // Come to rest (three frames still): the frames before may show it there already.
+    if (options_.date_rests_back && resting[k] && !s.was_resting[k]) date_rest_back(k, frame, bar);
   }
-  // The frames a part is missed in, kept a while: where it comes to rest shows how it got there.
-  if (std::all_of(s.seen_last.begin(), s.seen_last.end(), [](bool b) { return b; }) || options_.follow_back_frames <= 0) {
+  // The last frames, kept a while: where a part comes to rest shows how it got there (while a
+  // part is missed: follow_back; while one comes to rest: date_rest_back).
+  s.was_resting = resting;
+  const bool all_seen = std::all_of(s.seen_last.begin(), s.seen_last.end(), [](bool b) { return b; });
+  if ((all_seen && !options_.date_rests_back) || options_.follow_back_frames <= 0) {
     s.recent.clear();
   } else {
     s.recent.emplace_back(frame, image.clone());
@@ -470,6 +477,28 @@ void ModelPoseTracker::follow_back(size_t k, int frame, double bar) {
     T = r.camera_T_part;
     sample.valid = true;
     sample.pose = s.world_T_camera * T;
+    const double used = static_cast<double>(r.used_lines) / r.lines;
+    sample.confidence = std::clamp(r.contrast / 0.5, 0.0, 1.0) * std::min(1.0, used / 0.5);
+  }
+}
+
+void ModelPoseTracker::date_rest_back(size_t k, int frame, double bar) {
+  State& s = *state_;
+  // Its rest is seen over the last three frames; the ones before are asked, latest first.
+  const OcclusionMap map = occlusion_map();
+  for (auto it = s.recent.rbegin(); it != s.recent.rend(); ++it) {
+    const int f = it->first;
+    if (f > frame - 3) continue;
+    if (f < frame - options_.date_rests_back_frames - 2) break;
+    // At the rest's depth, from the rest pose: it stays there (within the rest hold) if it was there.
+    const RegionFrameResult r = track_region(it->second, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
+                                             static_cast<int>(k), options_.region, true);
+    if (r.contrast < bar || r.lines == 0 || r.used_lines < options_.lost_used_fraction * r.lines ||
+        !within_rest_hold(k, r.camera_T_part))
+      break;
+    PoseSample& sample = s.tracks.samples[k][f];
+    sample.valid = true;
+    sample.pose = s.world_T_camera * s.camera_T_part[k];
     const double used = static_cast<double>(r.used_lines) / r.lines;
     sample.confidence = std::clamp(r.contrast / 0.5, 0.0, 1.0) * std::min(1.0, used / 0.5);
   }

@@ -103,6 +103,13 @@ struct ModelTrackerOptions {
   // (kept while a part is not seen), as long as it is seen there: the end of the carry it was
   // lost in (its last approach, hidden from the search while it still moved) dates the release.
   int follow_back_frames = 15;
+  // A part come to rest (its centre still over three frames) may have been there before its
+  // estimate got there (a hand setting it down drags the outline along as it withdraws): each
+  // of up to `date_rests_back_frames` frames before those three that shows it at its rest, as a
+  // tracked frame does and within the rest hold when tracked from there, is reported at the rest,
+  // latest first, until one does not. (The last frames are then kept all the time.)
+  bool date_rests_back = true;
+  int date_rests_back_frames = 8;
   double prediction = 0.8;        // of the last frame's motion across the view, carried on
   double rest_px = 1.0;           // a part whose centre's image moved less over 3 frames holds its depth
   double rest_hold_px = 2.0;      // a resting part's smaller moves (and turns) are not taken
@@ -198,6 +205,9 @@ private:
   // Part k, found at rest in `frame`, tracked back from there through the kept frames before it
   // while it is seen (contrast `bar`), filling its samples there.
   void follow_back(size_t k, int frame, double bar);
+  // Part k, come to rest in `frame`: the kept frames before its three still ones reported at
+  // the rest while they show it there (date_rests_back).
+  void date_rest_back(size_t k, int frame, double bar);
 
   std::vector<ModelPart> models_;
   std::vector<FurnitureMesh> furniture_;

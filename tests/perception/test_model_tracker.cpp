@@ -241,11 +241,13 @@ TEST(ModelTracker, FollowsThePartsOfAVideoWithoutMarkers) {
 }
 
 // waiter_0 without markers: the sugar box, lifted fast off the tray (its first frame up 37 px,
-// before the arm's grey floor instead of the tray) and put on the shelf's top 25 cm higher in
-// the image, is followed through the carry: its release within 3 frames of the truth's (104),
-// at a rest within 15 mm of the truth's. (Taken by the search only on a find elsewhere's
-// clearer contrast, it was lost at the lift and found at 110 on another board 366 mm off.)
-TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelf) {
+// before the grey floor instead of the tray) and put on the shelf's top 25 cm higher in the
+// image, is followed through the carry (near_used_fraction: taken by the search only on a find
+// elsewhere's clearer contrast, it was lost at the lift and found at 110 on another board
+// 366 mm off), to a rest within 15 mm of the truth's. The hand setting it down drags its estimate
+// 8-16 cm off until 106; the frames before its rest showed it there already from 104, the
+// truth's release (date_rests_back; without, the release is dated 107).
+TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelfAndItsReleaseDated) {
   const fs::path dir = fs::temp_directory_path() / ("demoplan_model_tracker_waiter_" + std::to_string(::getpid()));
   SynthOptions o;
   o.data_dir = DEMOPLAN_DATA_DIR;
@@ -254,10 +256,13 @@ TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelf) {
   o.part_markers = false;
   const SynthOutput s = write_synthetic_demonstration(o, dir.string());
   const MarkerScene scene = load_marker_scene(s.scene);
-  const auto tracker = make_model_tracker(scene, s.scene, DEMOPLAN_DATA_DIR, load_tracker_init(s.init), s.init);
   ExtractionOptions eo;
   eo.scene = marker_scene_world(scene, s.scene, DEMOPLAN_DATA_DIR);
-  const Demonstration d = extract_demonstration(s.video, load_camera(s.camera), *tracker, scene.task, eo).demonstration;
+  auto extract = [&](const ModelTrackerOptions& options) {
+    const auto tracker = make_model_tracker(scene, s.scene, DEMOPLAN_DATA_DIR, load_tracker_init(s.init), s.init, options);
+    return extract_demonstration(s.video, load_camera(s.camera), *tracker, scene.task, eo).demonstration;
+  };
+  const Demonstration d = extract({});
   const Demonstration truth = load_demonstration(s.truth);
   const auto release_after = [](const Demonstration& x, int frame) -> const ContactEvent* {
     const auto sugar = std::find(x.object_ids.begin(), x.object_ids.end(), "YCBV_03") - x.object_ids.begin();
@@ -269,9 +274,15 @@ TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelf) {
   const ContactEvent* expected = release_after(truth, 90);
   ASSERT_TRUE(expected);
   ASSERT_TRUE(detected) << "the sugar box's last release was not detected";
-  EXPECT_LE(std::abs(detected->frame - expected->frame), 3);
+  EXPECT_LE(std::abs(detected->frame - expected->frame), 1);
   const auto sugar = static_cast<size_t>(detected->object);
   EXPECT_LT((detected->poses[sugar].translation() - expected->poses[sugar].translation()).norm(), 0.015);
+  ModelTrackerOptions late;
+  late.date_rests_back = false;
+  const Demonstration undated = extract(late);
+  const ContactEvent* later = release_after(undated, 90);
+  ASSERT_TRUE(later);
+  EXPECT_GE(later->frame, expected->frame + 3);
   fs::remove_all(dir);
 }
 
