@@ -22,6 +22,16 @@
 
 namespace demoplan::perception {
 
+namespace {
+
+// A measurement's confidence: full from a contrast of 0.5 with half the lines on an edge.
+double confidence_of(const RegionFrameResult& r) {
+  const double used = static_cast<double>(r.used_lines) / r.lines;
+  return std::clamp(r.contrast / 0.5, 0.0, 1.0) * std::min(1.0, used / 0.5);
+}
+
+}  // namespace
+
 struct ModelPoseTracker::State {
   PinholeIntrinsics intrinsics;
   cv::Size image_size;
@@ -435,8 +445,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     PoseSample& sample = s.tracks.samples[k][frame];
     sample.valid = true;
     sample.pose = s.world_T_camera * r.camera_T_part;
-    const double used = static_cast<double>(r.used_lines) / r.lines;
-    sample.confidence = std::clamp(r.contrast / 0.5, 0.0, 1.0) * std::min(1.0, used / 0.5);
+    sample.confidence = confidence_of(r);
     s.measured_at[k] = frame;
     seen.push_back({part, sample});
     if (found_resting) follow_back(k, frame, bar);
@@ -477,8 +486,7 @@ void ModelPoseTracker::follow_back(size_t k, int frame, double bar) {
     T = r.camera_T_part;
     sample.valid = true;
     sample.pose = s.world_T_camera * T;
-    const double used = static_cast<double>(r.used_lines) / r.lines;
-    sample.confidence = std::clamp(r.contrast / 0.5, 0.0, 1.0) * std::min(1.0, used / 0.5);
+    sample.confidence = confidence_of(r);
   }
 }
 
@@ -499,8 +507,7 @@ void ModelPoseTracker::date_rest_back(size_t k, int frame, double bar) {
     PoseSample& sample = s.tracks.samples[k][f];
     sample.valid = true;
     sample.pose = s.world_T_camera * s.camera_T_part[k];
-    const double used = static_cast<double>(r.used_lines) / r.lines;
-    sample.confidence = std::clamp(r.contrast / 0.5, 0.0, 1.0) * std::min(1.0, used / 0.5);
+    sample.confidence = confidence_of(r);
   }
 }
 
