@@ -230,10 +230,10 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     return tail;
   };
   auto rest_centre = [&]() { return centre_of(recent_rest([](const PoseSample&) { return true; })); };
-  // The centre of moving[end - count, end) (count: min_rest_frames) when those samples sit still about it.
-  auto still_window = [&](int end, int count = 0) -> std::optional<Pose> {
+  // The centre of moving[end - count, end) when those samples sit still about it.
+  auto still_window = [&](int end, int count) -> std::optional<Pose> {
     std::vector<const PoseSample*> window;
-    for (int k = end - (count > 0 ? count : o.min_rest_frames); k < end; ++k) window.push_back(&at(moving[k]));
+    for (int k = end - count; k < end; ++k) window.push_back(&at(moving[k]));
     const Pose centre = centre_of(window);
     for (const auto* w : window)
       if (!still(*w, centre, same_view(*w, *window.back()))) return std::nullopt;
@@ -264,7 +264,7 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
         const int m = static_cast<int>(moving.size());
         if (m >= o.min_rest_frames) {
           PoseSample c;
-          const std::optional<Pose> centre = still_window(m);
+          const std::optional<Pose> centre = still_window(m, o.min_rest_frames);
           if (centre) c.pose = *centre;
           if (centre && !beyond(c, ref, false)) {
             rest.assign(moving.end() - o.min_rest_frames, moving.end());
@@ -280,7 +280,7 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
       int last_rest = rest.back();
       // Samples that sat still among themselves right before the first one beyond the rest are
       // the rest's last frames, seen through other or partly hidden markers (the hand arriving).
-      if (first_beyond >= o.min_rest_frames && still_window(first_beyond)) last_rest = moving[first_beyond - 1];
+      if (first_beyond >= o.min_rest_frames && still_window(first_beyond, o.min_rest_frames)) last_rest = moving[first_beyond - 1];
       // So are fewer of them (as many as confirm a move), seen in a row and not drifting: an
       // estimate that jumped as the hand arrived, then sat still until the hand took the part.
       else if (first_beyond >= o.min_moving_frames && frames[moving[first_beyond - 1]] - frames[moving[0]] == first_beyond - 1 &&
@@ -305,7 +305,7 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
     cur.distance = std::max(cur.distance, (p.pose.translation() - start_ref.translation()).norm());
     const int m = static_cast<int>(moving.size());
     if (m < o.min_rest_frames) continue;
-    const std::optional<Pose> settled = drifting(m - o.min_rest_frames, m) ? std::nullopt : still_window(m);
+    const std::optional<Pose> settled = drifting(m - o.min_rest_frames, m) ? std::nullopt : still_window(m, o.min_rest_frames);
     if (!settled) continue;
     const Pose centre = *settled;
     // At rest again: it came to rest at the earliest sample that is still at the new pose

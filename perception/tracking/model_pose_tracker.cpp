@@ -281,9 +281,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       }
     };
     const double bar = std::max(options_.lost_contrast, options_.relative_contrast * s.reference_contrast[k]);
-    auto is_seen = [&](const RegionFrameResult& x) {
-      return x.contrast >= bar && x.lines > 0 && x.used_lines >= options_.lost_used_fraction * x.lines;
-    };
+    auto is_seen = [&](const RegionFrameResult& x) { return seen_in(x, bar); };
     // While the parts it rested with ride away, it goes as they go (ride_prediction.h). Not
     // measured since the last frame, it is looked for there before it is held at (or looked for
     // around) the rest it left.
@@ -482,7 +480,7 @@ void ModelPoseTracker::follow_back(size_t k, int frame, double bar) {
     // Free in depth: it was moving.
     const RegionFrameResult r =
         track_region(it->second, s.intrinsics, *contours_[k], s.colors[k], T, map, static_cast<int>(k), options_.region);
-    if (r.contrast < bar || r.lines == 0 || r.used_lines < options_.lost_used_fraction * r.lines) break;
+    if (!seen_in(r, bar)) break;
     T = r.camera_T_part;
     sample.valid = true;
     sample.pose = s.world_T_camera * T;
@@ -501,9 +499,7 @@ void ModelPoseTracker::date_rest_back(size_t k, int frame, double bar) {
     // At the rest's depth, from the rest pose: it stays there (within the rest hold) if it was there.
     const RegionFrameResult r = track_region(it->second, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
                                              static_cast<int>(k), options_.region, true);
-    if (r.contrast < bar || r.lines == 0 || r.used_lines < options_.lost_used_fraction * r.lines ||
-        !within_rest_hold(k, r.camera_T_part))
-      break;
+    if (!seen_in(r, bar) || !within_rest_hold(k, r.camera_T_part)) break;
     PoseSample& sample = s.tracks.samples[k][f];
     sample.valid = true;
     sample.pose = s.world_T_camera * s.camera_T_part[k];
@@ -637,6 +633,10 @@ RegionFrameResult ModelPoseTracker::search(const cv::Mat& image, int k, const Oc
     if (i == 0 || r.contrast > best.contrast) best = r;
   }
   return best;
+}
+
+bool ModelPoseTracker::seen_in(const RegionFrameResult& r, double bar) const {
+  return r.contrast >= bar && r.lines > 0 && r.used_lines >= options_.lost_used_fraction * r.lines;
 }
 
 bool ModelPoseTracker::within_rest_hold(size_t k, const Pose& measured) const {

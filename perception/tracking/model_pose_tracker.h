@@ -187,6 +187,9 @@ private:
   bool passed_in_front(size_t k, const std::vector<bool>& moving) const;
   // Part k looked for around its last pose: the best of the tracked candidates.
   RegionFrameResult search(const cv::Mat& image, int k, const OcclusionMap& map) const;
+  // Whether a measurement shows its part: it stands out at least `bar` (the part's contrast bar)
+  // with lost_used_fraction of its lines finding an edge.
+  bool seen_in(const RegionFrameResult& r, double bar) const;
   // Whether a measurement of resting part k lies within what its rest holds to (its centre's
   // image within rest_hold_px of the last, its turn within rest_hold_deg): no move.
   bool within_rest_hold(size_t k, const Pose& measured) const;
