@@ -647,17 +647,23 @@ bool ModelPoseTracker::within_rest_hold(size_t k, const Pose& measured) const {
 }
 
 std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k) const {
+  const State& s = *state_;
   if (std::optional<RegionFrameResult> found = rest_search(image, k, options_.rest_search_radii, false)) return found;
   // Not within the plain reach: the longer it has been lost, the farther it may have been
   // carried before it was put down. Beyond the plain reach only on the evidence of a part in
   // full view.
-  const int frames = std::max(state_->unseen[k] - options_.rest_search_growth_after, 0);
+  const int frames = std::max(s.unseen[k] - options_.rest_search_growth_after, 0);
   const double radii = std::min(options_.rest_search_radii + options_.rest_search_growth * frames, options_.rest_search_max_radii);
-  if (radii <= options_.rest_search_radii) return std::nullopt;
-  return rest_search(image, k, radii, true);
+  if (radii > options_.rest_search_radii)
+    if (std::optional<RegionFrameResult> found = rest_search(image, k, radii, true)) return found;
+  // Not as it stood: perhaps laid on a side (a box put down on its side), within the plain reach
+  // (the search beyond it on the sides too measured slower and found nothing more).
+  if (!options_.rest_search_faces) return std::nullopt;
+  return rest_search(image, k, options_.rest_search_radii, false, true);
 }
 
-std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k, double radii, bool beyond) const {
+std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k, double radii, bool beyond,
+                                                               bool other_faces) const {
   const State& s = *state_;
   const ContourModel& model = *contours_[k];
   const Pose& last = s.camera_T_part[k];
@@ -677,16 +683,30 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
       if (p.x() >= 0 && p.y() >= 0 && p.x() < s.image_size.width && p.y() < s.image_size.height) pixels.push_back(p);
     }
   // Turned about the vertical from its last rest: as it was last seen (a carried part is mostly
-  // put down as it was held), and evenly around that.
+  // put down as it was held), and evenly around that; on another face (rest_search_faces), evenly.
   const Eigen::Matrix3d& rest = s.rest_rotation[k];
   const Eigen::Matrix3d turned = s.world_T_camera.linear() * last.linear() * rest.transpose();
   const double seen_turn = std::atan2(turned(1, 0), turned(0, 0));
-  std::vector<double> turns;
   const int turn_count = std::max(options_.rest_search_turns, 1);
-  for (int i = 0; i < turn_count; ++i) turns.push_back(seen_turn + 2 * M_PI * i / turn_count);
-  const RestingPart resting{parts_[k].extent, centre_height(models_[k].mesh, model.centre(), rest)};
-  const std::vector<RestingCandidate> candidates =
-      resting_candidates(s.supports, resting, rest, turns, s.world_T_camera, s.intrinsics, pixels, furniture_);
+  std::vector<Eigen::Matrix3d> orientations = resting_orientations(rest);
+  if (other_faces)
+    orientations.erase(orientations.begin());
+  else
+    orientations.resize(1);
+  std::vector<RestingPart> resting;
+  std::vector<RestingCandidate> candidates;
+  for (size_t face = 0; face < orientations.size(); ++face) {
+    resting.push_back({parts_[k].extent, centre_height(models_[k].mesh, model.centre(), orientations[face])});
+    std::vector<double> turns;
+    // (On its sides, half as many: the four sides are tried each.)
+    const int count = other_faces ? std::max(turn_count / 2, 1) : turn_count;
+    for (int i = 0; i < count; ++i) turns.push_back((other_faces ? 0.0 : seen_turn) + 2 * M_PI * i / count);
+    for (RestingCandidate& c : resting_candidates(s.supports, resting[face], orientations[face], turns, s.world_T_camera,
+                                                  s.intrinsics, pixels, furniture_)) {
+      c.face = face;
+      candidates.push_back(c);
+    }
+  }
   // Scored on what the furniture and the other parts leave visible (its own stale pose hides
   // nothing), first over a band as wide as half the grid's step: the candidates are that far
   // apart. A candidate that shows too little of itself cannot be told from anything else.
@@ -706,7 +726,8 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
   // more (steps halving down to 2 px): the grid is too coarse for the contour's lines to pull
   // a candidate in from where it lies.
   auto same_place = [](const RestingCandidate& a, const RestingCandidate& b, double px) {
-    return (a.pixel - b.pixel).norm() < px && std::abs(std::remainder(a.turn - b.turn, 2 * M_PI)) < M_PI / 4;
+    return a.face == b.face && (a.pixel - b.pixel).norm() < px &&
+           std::abs(std::remainder(a.turn - b.turn, 2 * M_PI)) < M_PI / 4;
   };
   std::vector<RestingCandidate> picked;
   for (const auto& [v, i] : scored) {
@@ -715,7 +736,7 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
       picked.push_back(candidates[i]);
   }
   for (auto& p : picked) {
-    for (double d = step / 2, a = M_PI / turns.size(); d >= 2.0; d /= 2, a /= 2) {
+    for (double d = step / 2, a = (other_faces ? 2 : 1) * M_PI / turn_count; d >= 2.0; d /= 2, a /= 2) {
       // Scored over a band as wide as the step: a finer one would not see the way from afar.
       const int band = std::max(2, static_cast<int>(d / 4));
       double best = score(p.camera_T_part, band);
@@ -726,7 +747,8 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
           q.pixel += Eigen::Vector2d(du, dv);
           q.turn += dt;
           const std::optional<Pose> T =
-              resting_pose(s.supports[q.level].height, resting, rest, q.turn, s.world_T_camera, s.intrinsics, q.pixel);
+              resting_pose(s.supports[q.level].height, resting[q.face], orientations[q.face], q.turn, s.world_T_camera,
+                           s.intrinsics, q.pixel);
           if (!T) continue;
           if (const double v = score(*T, band); v > best) {
             q.camera_T_part = *T;
@@ -745,9 +767,9 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     if (tries.size() < static_cast<size_t>(std::max(options_.rest_search_tries, 0)) &&
         std::none_of(tries.begin(), tries.end(), [&](const RestingCandidate& q) { return same_place(picked[i], q, step / 2); }))
       tries.push_back(picked[i]);
-  const Eigen::Vector3d part_up = rest.transpose().col(2);  // the part's axis that pointed up at rest
   std::optional<RegionFrameResult> best;
   for (const auto& t : tries) {
+    const Eigen::Vector3d part_up = orientations[t.face].transpose().col(2);  // the part's axis up as put down
     const Pose& candidate = t.camera_T_part;
     // At the support's depth: it is a better cue than the silhouette's size, half hidden.
     const RegionFrameResult r =
@@ -756,8 +778,10 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     if (visible < options_.rest_visible_fraction * r.lines || r.used_lines < options_.rest_used_fraction * visible ||
         r.contrast < options_.rest_contrast * s.reference_contrast[k])
       continue;
-    // Beyond the plain reach (grown with the time lost): only on the evidence of a part in full view.
-    if (beyond &&
+    // Beyond the plain reach (grown with the time lost), or on another face than it rested on
+    // (more poses tried, more chances for a wrong one to fit): only on the evidence of a part in
+    // full view.
+    if ((beyond || other_faces) &&
         (r.hidden_lines > 0.1 * r.lines || r.used_lines < 0.9 * r.lines || r.contrast < options_.search_contrast * s.reference_contrast[k]))
       continue;
     // Still standing on the support it was put on: not tilted off it, not lifted or sunk.
@@ -765,7 +789,7 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     const double tilt = std::acos(std::clamp(part_up.dot(world_R.transpose().col(2)), -1.0, 1.0));
     const double bottom = (s.world_T_camera * r.camera_T_part * model.centre()).z() -
                           centre_height(models_[k].mesh, model.centre(), world_R);
-    const double support = (s.world_T_camera * candidate * model.centre()).z() - resting.lift;
+    const double support = (s.world_T_camera * candidate * model.centre()).z() - resting[t.face].lift;
     if (tilt > options_.rest_tilt_deg * M_PI / 180 || std::abs(bottom - support) > options_.rest_height_tolerance) continue;
     // The most evidence: edges found, and how clearly.
     if (!best || r.used_lines * r.contrast > best->used_lines * best->contrast) best = r;

@@ -81,6 +81,9 @@ struct ModelTrackerOptions {
   int rest_search_growth_after = 0;
   double rest_search_max_radii = 6.0;
   int rest_search_turns = 12;           // over the whole turn, one of them the last seen turn
+  // Not found as it stood: looked for laid on each side of its box (a box put down on its side),
+  // within rest_search_radii, half as many turns each; taken only in full view, as beyond the reach.
+  bool rest_search_faces = true;
   double rest_search_density = 4.0;     // grid points per radius
   int rest_search_climbs = 12;          // best candidates moved and turned while they stand out more
   int rest_search_tries = 4;            // of those, tracked from
@@ -197,7 +200,9 @@ private:
   // the best candidate that passes the rules that judge it on its visible lines, if any.
   std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k) const;
   // The search within `radii` of its radii (beyond: only outside the plain reach, on stricter evidence).
-  std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, double radii, bool beyond) const;
+  // On the faces other than the last rest's (`other_faces`: rest_search_faces), on the same strict evidence.
+  std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, double radii, bool beyond,
+                                               bool other_faces = false) const;
   // A part not measured at its rest since the last frame, while parts that rested beside it
   // left together as one body, may have ridden with them: its ride is noted; a ride whose
   // riders went apart no longer tells where it is, and is dropped.

@@ -76,6 +76,18 @@ std::optional<Pose> resting_pose(double height, const RestingPart& part, const E
   return world_T_camera.inverse() * world_T_part;
 }
 
+std::vector<Eigen::Matrix3d> resting_orientations(const Eigen::Matrix3d& last_rest) {
+  std::vector<Eigen::Matrix3d> out{last_rest};
+  const Eigen::Vector3d down_before = last_rest.transpose() * -Eigen::Vector3d::UnitZ();  // part frame
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double sign : {1.0, -1.0}) {
+      const Eigen::Vector3d down = sign * Eigen::Vector3d::Unit(axis);
+      if (std::abs(down.dot(down_before)) > std::cos(M_PI / 4)) continue;  // as it stood, or upside down
+      out.push_back(Eigen::Quaterniond::FromTwoVectors(down, -Eigen::Vector3d::UnitZ()).toRotationMatrix());
+    }
+  return out;
+}
+
 std::vector<RestingCandidate> resting_candidates(const std::vector<SupportLevel>& levels, const RestingPart& part,
                                                  const Eigen::Matrix3d& world_R_rest, const std::vector<double>& turns,
                                                  const Pose& world_T_camera, const PinholeIntrinsics& K,

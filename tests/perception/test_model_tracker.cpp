@@ -286,6 +286,46 @@ TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelfAndItsReleaseDated
   fs::remove_all(dir);
 }
 
+// waiter_0 with the occluder: the cracker box, standing while carried, is lost behind the
+// occluder and laid on its side on the table (57): the rest search finds it there only when it
+// tries the part's other faces.
+TEST(ModelTracker, ABoxLaidOnItsSideWhileHiddenIsFoundThere) {
+  const fs::path dir = fs::temp_directory_path() / ("demoplan_model_tracker_side_" + std::to_string(::getpid()));
+  SynthOptions o;
+  o.data_dir = DEMOPLAN_DATA_DIR;
+  o.task = "waiter_0";
+  o.robot = "kmr_iiwa";
+  o.part_markers = false;
+  o.occlusion = true;
+  const SynthOutput s = write_synthetic_demonstration(o, dir.string());
+  const MarkerScene scene = load_marker_scene(s.scene);
+  ExtractionOptions eo;
+  eo.scene = marker_scene_world(scene, s.scene, DEMOPLAN_DATA_DIR);
+  auto extract = [&](const ModelTrackerOptions& options) {
+    const auto tracker = make_model_tracker(scene, s.scene, DEMOPLAN_DATA_DIR, load_tracker_init(s.init), s.init, options);
+    return extract_demonstration(s.video, load_camera(s.camera), *tracker, scene.task, eo).demonstration;
+  };
+  const Demonstration truth = load_demonstration(s.truth);
+  const auto box = static_cast<int>(std::find(truth.object_ids.begin(), truth.object_ids.end(), "YCBV_02") - truth.object_ids.begin());
+  const auto first_release = std::find_if(truth.events.begin(), truth.events.end(), [&](const ContactEvent& e) {
+    return e.object == box && e.type == EventType::Release;
+  });
+  ASSERT_NE(first_release, truth.events.end());
+  // Laid on its side: its up axis is horizontal at the release.
+  ASSERT_LT(std::abs(first_release->poses[box].linear()(2, 2)), 0.1);
+  const auto released_there = [&](const Demonstration& d) {
+    return std::any_of(d.events.begin(), d.events.end(), [&](const ContactEvent& e) {
+      return e.object == box && e.type == EventType::Release && std::abs(e.frame - first_release->frame) <= 2 &&
+             (e.poses[box].translation() - first_release->poses[box].translation()).norm() < 0.015;
+    });
+  };
+  EXPECT_TRUE(released_there(extract({})));
+  ModelTrackerOptions standing_only;
+  standing_only.rest_search_faces = false;
+  EXPECT_FALSE(released_there(extract(standing_only)));
+  fs::remove_all(dir);
+}
+
 // A part tracked within 3 mm in frames 0-9, never reported under the board in frames 10-19:
 // the first frame from 20 on it is reported in again (-1: none).
 int found_after_the_board(const PoseTracks& tracks, const std::vector<Pose>& truth) {

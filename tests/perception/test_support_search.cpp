@@ -1,0 +1,53 @@
+// Where a lost part may have been put down: the orientations the rest search tries.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include "perception/tracking/support_search.h"
+
+using namespace demoplan::perception;
+
+namespace {
+
+// The part's axis (its frame) that points down at world_R_part.
+Eigen::Vector3d down_axis(const Eigen::Matrix3d& world_R_part) { return world_R_part.transpose() * -Eigen::Vector3d::UnitZ(); }
+
+}  // namespace
+
+TEST(RestingOrientations, StandingAsBeforeFirstThenOnEachSide) {
+  const Eigen::Matrix3d upright = Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const std::vector<Eigen::Matrix3d> o = resting_orientations(upright);
+  ASSERT_EQ(o.size(), 5u);
+  EXPECT_TRUE(o[0].isApprox(upright));
+  // The sides: +-x and +-y down once each, never z (as it stood, or upside down).
+  std::vector<Eigen::Vector3d> sides;
+  for (size_t i = 1; i < o.size(); ++i) {
+    EXPECT_NEAR(o[i].determinant(), 1.0, 1e-12);
+    EXPECT_TRUE((o[i].transpose() * o[i]).isIdentity(1e-12));
+    const Eigen::Vector3d d = down_axis(o[i]);
+    EXPECT_NEAR(std::abs(d.z()), 0.0, 1e-12) << "orientation " << i;
+    EXPECT_NEAR(d.cwiseAbs().maxCoeff(), 1.0, 1e-12) << "orientation " << i;
+    sides.push_back(d);
+  }
+  for (const Eigen::Vector3d& axis : std::vector<Eigen::Vector3d>{Eigen::Vector3d::UnitX(), -Eigen::Vector3d::UnitX(),
+                                                                  Eigen::Vector3d::UnitY(), -Eigen::Vector3d::UnitY()})
+    EXPECT_EQ(std::count_if(sides.begin(), sides.end(), [&](const Eigen::Vector3d& d) { return d.isApprox(axis); }), 1)
+        << axis.transpose();
+}
+
+TEST(RestingOrientations, ABoxOnItsSideIsTriedStandingAndOnTheOtherSides) {
+  // Lying on its +y face: +y points down.
+  const Eigen::Matrix3d on_side = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  ASSERT_TRUE(down_axis(on_side).isApprox(Eigen::Vector3d::UnitY()));
+  const std::vector<Eigen::Matrix3d> o = resting_orientations(on_side);
+  ASSERT_EQ(o.size(), 5u);
+  bool standing = false, upside_down = false;
+  for (size_t i = 1; i < o.size(); ++i) {
+    const Eigen::Vector3d d = down_axis(o[i]);
+    EXPECT_LT(std::abs(d.y()), 1e-12) << "tried on the side it lay on, or the opposite one";
+    standing = standing || d.isApprox(-Eigen::Vector3d::UnitZ());
+    upside_down = upside_down || d.isApprox(Eigen::Vector3d::UnitZ());
+  }
+  EXPECT_TRUE(standing);
+  EXPECT_TRUE(upside_down);
+}
