@@ -499,8 +499,18 @@ void ModelPoseTracker::date_rest_back(size_t k, int frame, double bar) {
     // At the rest's depth, from the rest pose: it stays there (within the rest hold) if it was there.
     const RegionFrameResult r = track_region(it->second, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
                                              static_cast<int>(k), options_.region, true);
-    if (!seen_in(r, bar) || !within_rest_hold(k, r.camera_T_part)) break;
     PoseSample& sample = s.tracks.samples[k][f];
+    if (!seen_in(r, bar)) break;
+    // Tracked from the rest it stays there; or the hand withdrawing over it pulls the outline
+    // off, and the rest still shows the part at least as well as the estimate reported then
+    // (which the hand dragged: waiter_0's cracker box laid down at 57, reported there from 60).
+    auto rest_explains = [&] {
+      if (!options_.date_rests_back_by_contrast || !sample.valid) return false;
+      const double at_rest = contour_contrast(it->second, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k]);
+      return at_rest >= options_.lost_contrast &&
+             at_rest >= contour_contrast(it->second, s.intrinsics, *contours_[k], s.colors[k], s.world_T_camera.inverse() * sample.pose);
+    };
+    if (!within_rest_hold(k, r.camera_T_part) && !rest_explains()) break;
     sample.valid = true;
     sample.pose = s.world_T_camera * s.camera_T_part[k];
     sample.confidence = confidence_of(r);

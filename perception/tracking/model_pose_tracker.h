@@ -113,6 +113,9 @@ struct ModelTrackerOptions {
   // latest first, until one does not. (The last frames are then kept all the time.)
   bool date_rests_back = true;
   int date_rests_back_frames = 8;
+  // Also a frame in which, tracked from the rest, it moves (a hand withdrawing over it pulls the
+  // outline), when the rest stands out there at least as much as the pose reported then.
+  bool date_rests_back_by_contrast = true;
   double prediction = 0.8;        // of the last frame's motion across the view, carried on
   double rest_px = 1.0;           // a part whose centre's image moved less over 3 frames holds its depth
   double rest_hold_px = 2.0;      // a resting part's smaller moves (and turns) are not taken

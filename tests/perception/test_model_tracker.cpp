@@ -246,7 +246,8 @@ TEST(ModelTracker, FollowsThePartsOfAVideoWithoutMarkers) {
 // elsewhere's clearer contrast, it was lost at the lift and found at 110 on another board
 // 366 mm off), to a rest within 15 mm of the truth's. The hand setting it down drags its estimate
 // 8-16 cm off until 106; the frames before its rest showed it there already from 104, the
-// truth's release (date_rests_back; without, the release is dated 107).
+// truth's release (date_rests_back; without, the release is dated 107). The cracker box laid
+// down at 57 has its outline dragged by the withdrawing hand until 60: dated at 57 too.
 TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelfAndItsReleaseDated) {
   const fs::path dir = fs::temp_directory_path() / ("demoplan_model_tracker_waiter_" + std::to_string(::getpid()));
   SynthOptions o;
@@ -283,6 +284,24 @@ TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelfAndItsReleaseDated
   const ContactEvent* later = release_after(undated, 90);
   ASSERT_TRUE(later);
   EXPECT_GE(later->frame, expected->frame + 3);
+  // The cracker box laid down at 57 while the hand withdraws over it (its outline dragged along
+  // until 60): dated where the rest shows it at least as well as the dragged estimate did.
+  const auto first_box_release = [](const Demonstration& x) -> const ContactEvent* {
+    const auto box = std::find(x.object_ids.begin(), x.object_ids.end(), "YCBV_02") - x.object_ids.begin();
+    for (const auto& e : x.events)
+      if (e.object == box && e.type == EventType::Release) return &e;
+    return nullptr;
+  };
+  const ContactEvent* box_truth = first_box_release(truth);
+  const ContactEvent* box_detected = first_box_release(d);
+  ASSERT_TRUE(box_truth);
+  ASSERT_TRUE(box_detected);
+  EXPECT_LE(std::abs(box_detected->frame - box_truth->frame), 1);
+  ModelTrackerOptions tracked_only;
+  tracked_only.date_rests_back_by_contrast = false;
+  const ContactEvent* box_late = first_box_release(extract(tracked_only));
+  ASSERT_TRUE(box_late);
+  EXPECT_GE(box_late->frame, box_truth->frame + 3);
   fs::remove_all(dir);
 }
 
