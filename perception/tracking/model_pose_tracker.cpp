@@ -203,7 +203,16 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     // The starting poses, and what the parts and their surroundings look like there.
     for (size_t k = 0; k < models_.size(); ++k)
       s.camera_T_part[k] = s.world_T_camera.inverse() * init_.find(models_[k].id)->world_T_object;
-    for (size_t k = 0; k < models_.size(); ++k) settle_start(image, k);
+    {
+      // GrabCut (settle_start) seeds its colour models by k-means from OpenCV's global random
+      // generator: started from its initial state here, a start settles the same in every
+      // extraction, the first of a process (the CLI) or a later one (the GUI, bench_extraction).
+      cv::RNG& rng = cv::theRNG();
+      const cv::RNG before = rng;
+      rng = cv::RNG();
+      for (size_t k = 0; k < models_.size(); ++k) settle_start(image, k);
+      rng = before;
+    }
     const OcclusionMap map = occlusion_map();
     for (size_t k = 0; k < models_.size(); ++k)
       learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], map, static_cast<int>(k), s.colors[k],
