@@ -7,7 +7,8 @@
 // part whose silhouette no longer stands out (a hand over it, out of the picture) keeps its last
 // pose, reported invalid, and is looked for around it in the next frames (a grid of shifts
 // across the view scored by contrast, the best tracked from; then among the places on the
-// furniture where it could have been put down, support_search.h, judged on its visible lines).
+// furniture where it could have been put down, standing as before or laid on a side,
+// support_search.h, judged on its visible lines).
 // A part found so is followed back into the frames it was missed in. A part seen in the last
 // two frames is predicted to go on as it moved (a carry). Parts are tracked nearest first; a
 // resting part that is not measured while another moves is held at its rest (not searched for)
