@@ -707,11 +707,7 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
   const Eigen::Matrix3d turned = s.world_T_camera.linear() * last.linear() * rest.transpose();
   const double seen_turn = std::atan2(turned(1, 0), turned(0, 0));
   const int turn_count = std::max(options_.rest_search_turns, 1);
-  std::vector<Eigen::Matrix3d> orientations{rest};
-  if (other_faces) {
-    orientations = resting_orientations(rest);
-    orientations.erase(orientations.begin());  // as it stood: searched already
-  }
+  const std::vector<Eigen::Matrix3d> orientations = other_faces ? laid_on_sides(rest) : std::vector<Eigen::Matrix3d>{rest};
   std::vector<RestingPart> resting;
   std::vector<RestingCandidate> candidates;
   for (size_t face = 0; face < orientations.size(); ++face) {

@@ -76,8 +76,8 @@ std::optional<Pose> resting_pose(double height, const RestingPart& part, const E
   return world_T_camera.inverse() * world_T_part;
 }
 
-std::vector<Eigen::Matrix3d> resting_orientations(const Eigen::Matrix3d& last_rest) {
-  std::vector<Eigen::Matrix3d> out{last_rest};
+std::vector<Eigen::Matrix3d> laid_on_sides(const Eigen::Matrix3d& last_rest) {
+  std::vector<Eigen::Matrix3d> out;
   const Eigen::Vector3d down_before = last_rest.transpose() * -Eigen::Vector3d::UnitZ();  // part frame
   for (int axis = 0; axis < 3; ++axis)
     for (const double sign : {1.0, -1.0}) {

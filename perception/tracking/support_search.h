@@ -59,14 +59,14 @@ struct RestingCandidate {
   Eigen::Vector2d pixel;  // of its centre
   double turn = 0.0;
   size_t level = 0;
-  size_t face = 0;  // which of the orientations it rests at (resting_orientations)
+  size_t face = 0;  // which of the orientations searched it rests at
 };
 
-// The orientations a part may be put down at: `last_rest` first (a carried part is mostly put
-// down as it stood), then laid on each side of its box (a box laid on its side): the part's
-// axes +-x, +-y, +-z turned onto the world's down, those within 45 degrees of the last rest's
-// down or up axis left out (a part is seldom put down upside down).
-std::vector<Eigen::Matrix3d> resting_orientations(const Eigen::Matrix3d& last_rest);
+// The orientations of a part laid on each side of its box (a box put down on its side, not as
+// it stood at `last_rest`): the part's axes +-x, +-y, +-z turned onto the world's down, those
+// within 45 degrees of the last rest's down or up axis left out (a part is seldom put down
+// upside down).
+std::vector<Eigen::Matrix3d> laid_on_sides(const Eigen::Matrix3d& last_rest);
 
 // The resting poses for each of `pixels` (image coordinates), level and turn (resting_pose) that
 // the level holds and whose core (the part's box shrunk to half about its centre) is in no

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <memory>
 
 #include <opencv2/videoio.hpp>
 
@@ -242,6 +244,43 @@ TEST(ModelTracker, FollowsThePartsOfAVideoWithoutMarkers) {
   fs::remove_all(dir);
 }
 
+// waiter_0 rendered without markers (with `adjust` applied to its options), extracted with
+// the model tracker as `extract` does it; the folder is removed with it.
+struct WaiterVideo {
+  fs::path dir;
+  SynthOutput s;
+  MarkerScene scene;
+  ExtractionOptions eo;
+
+  explicit WaiterVideo(const std::string& name, const std::function<void(SynthOptions&)>& adjust = {})
+      : dir(fs::temp_directory_path() / ("demoplan_model_tracker_" + name + "_" + std::to_string(::getpid()))) {
+    SynthOptions o;
+    o.data_dir = DEMOPLAN_DATA_DIR;
+    o.task = "waiter_0";
+    o.robot = "kmr_iiwa";
+    o.part_markers = false;
+    if (adjust) adjust(o);
+    s = write_synthetic_demonstration(o, dir.string());
+    scene = load_marker_scene(s.scene);
+    eo.scene = marker_scene_world(scene, s.scene, DEMOPLAN_DATA_DIR);
+  }
+  ~WaiterVideo() { fs::remove_all(dir); }
+  std::unique_ptr<PoseTracker> tracker(const ModelTrackerOptions& options) const {
+    return make_model_tracker(scene, s.scene, DEMOPLAN_DATA_DIR, load_tracker_init(s.init), s.init, options);
+  }
+  Demonstration extract(const ModelTrackerOptions& options = {}) const {
+    return extract_demonstration(s.video, load_camera(s.camera), *tracker(options), scene.task, eo).demonstration;
+  }
+};
+
+// The first release of part `id` after `frame`; null when there is none.
+const ContactEvent* release_after(const Demonstration& d, const std::string& id, int frame = -1) {
+  const auto part = std::find(d.object_ids.begin(), d.object_ids.end(), id) - d.object_ids.begin();
+  for (const auto& e : d.events)
+    if (e.object == part && e.type == EventType::Release && e.frame > frame) return &e;
+  return nullptr;
+}
+
 // waiter_0 without markers: the sugar box, lifted fast off the tray (its first frame up 37 px,
 // before the grey floor instead of the tray) and put on the shelf's top 25 cm higher in the
 // image, is followed through the carry (near_used_fraction: taken by the search only on a find
@@ -251,30 +290,11 @@ TEST(ModelTracker, FollowsThePartsOfAVideoWithoutMarkers) {
 // truth's release (date_rests_back; without, the release is dated 107). The cracker box laid
 // down at 57 has its outline dragged by the withdrawing hand until 60: dated at 57 too.
 TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelfAndItsReleaseDated) {
-  const fs::path dir = fs::temp_directory_path() / ("demoplan_model_tracker_waiter_" + std::to_string(::getpid()));
-  SynthOptions o;
-  o.data_dir = DEMOPLAN_DATA_DIR;
-  o.task = "waiter_0";
-  o.robot = "kmr_iiwa";
-  o.part_markers = false;
-  const SynthOutput s = write_synthetic_demonstration(o, dir.string());
-  const MarkerScene scene = load_marker_scene(s.scene);
-  ExtractionOptions eo;
-  eo.scene = marker_scene_world(scene, s.scene, DEMOPLAN_DATA_DIR);
-  auto extract = [&](const ModelTrackerOptions& options) {
-    const auto tracker = make_model_tracker(scene, s.scene, DEMOPLAN_DATA_DIR, load_tracker_init(s.init), s.init, options);
-    return extract_demonstration(s.video, load_camera(s.camera), *tracker, scene.task, eo).demonstration;
-  };
-  const Demonstration d = extract({});
-  const Demonstration truth = load_demonstration(s.truth);
-  const auto release_after = [](const Demonstration& x, int frame) -> const ContactEvent* {
-    const auto sugar = std::find(x.object_ids.begin(), x.object_ids.end(), "YCBV_03") - x.object_ids.begin();
-    for (const auto& e : x.events)
-      if (e.object == sugar && e.type == EventType::Release && e.frame > frame) return &e;
-    return nullptr;
-  };
-  const ContactEvent* detected = release_after(d, 90);
-  const ContactEvent* expected = release_after(truth, 90);
+  const WaiterVideo video("waiter");
+  const Demonstration d = video.extract();
+  const Demonstration truth = load_demonstration(video.s.truth);
+  const ContactEvent* detected = release_after(d, "YCBV_03", 90);
+  const ContactEvent* expected = release_after(truth, "YCBV_03", 90);
   ASSERT_TRUE(expected);
   ASSERT_TRUE(detected) << "the sugar box's last release was not detected";
   EXPECT_LE(std::abs(detected->frame - expected->frame), 1);
@@ -282,56 +302,34 @@ TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelfAndItsReleaseDated
   EXPECT_LT((detected->poses[sugar].translation() - expected->poses[sugar].translation()).norm(), 0.015);
   ModelTrackerOptions late;
   late.date_rests_back = false;
-  const Demonstration undated = extract(late);
-  const ContactEvent* later = release_after(undated, 90);
+  const Demonstration undated = video.extract(late);
+  const ContactEvent* later = release_after(undated, "YCBV_03", 90);
   ASSERT_TRUE(later);
   EXPECT_GE(later->frame, expected->frame + 3);
   // The cracker box laid down at 57 while the hand withdraws over it (its outline dragged along
   // until 60): dated where the rest shows it at least as well as the dragged estimate did.
-  const auto first_box_release = [](const Demonstration& x) -> const ContactEvent* {
-    const auto box = std::find(x.object_ids.begin(), x.object_ids.end(), "YCBV_02") - x.object_ids.begin();
-    for (const auto& e : x.events)
-      if (e.object == box && e.type == EventType::Release) return &e;
-    return nullptr;
-  };
-  const ContactEvent* box_truth = first_box_release(truth);
-  const ContactEvent* box_detected = first_box_release(d);
+  const ContactEvent* box_truth = release_after(truth, "YCBV_02");
+  const ContactEvent* box_detected = release_after(d, "YCBV_02");
   ASSERT_TRUE(box_truth);
   ASSERT_TRUE(box_detected);
   EXPECT_LE(std::abs(box_detected->frame - box_truth->frame), 1);
   ModelTrackerOptions tracked_only;
   tracked_only.date_rests_back_by_contrast = false;
-  const ContactEvent* box_late = first_box_release(extract(tracked_only));
+  const Demonstration tracked = video.extract(tracked_only);
+  const ContactEvent* box_late = release_after(tracked, "YCBV_02");
   ASSERT_TRUE(box_late);
   EXPECT_GE(box_late->frame, box_truth->frame + 3);
-  fs::remove_all(dir);
 }
 
 // waiter_0 with the occluder: the cracker box, standing while carried, is lost behind the
 // occluder and laid on its side on the table (57): the rest search finds it there only when it
 // tries the part's other faces.
 TEST(ModelTracker, ABoxLaidOnItsSideWhileHiddenIsFoundThere) {
-  const fs::path dir = fs::temp_directory_path() / ("demoplan_model_tracker_side_" + std::to_string(::getpid()));
-  SynthOptions o;
-  o.data_dir = DEMOPLAN_DATA_DIR;
-  o.task = "waiter_0";
-  o.robot = "kmr_iiwa";
-  o.part_markers = false;
-  o.occlusion = true;
-  const SynthOutput s = write_synthetic_demonstration(o, dir.string());
-  const MarkerScene scene = load_marker_scene(s.scene);
-  ExtractionOptions eo;
-  eo.scene = marker_scene_world(scene, s.scene, DEMOPLAN_DATA_DIR);
-  auto extract = [&](const ModelTrackerOptions& options) {
-    const auto tracker = make_model_tracker(scene, s.scene, DEMOPLAN_DATA_DIR, load_tracker_init(s.init), s.init, options);
-    return extract_demonstration(s.video, load_camera(s.camera), *tracker, scene.task, eo).demonstration;
-  };
-  const Demonstration truth = load_demonstration(s.truth);
-  const auto box = static_cast<int>(std::find(truth.object_ids.begin(), truth.object_ids.end(), "YCBV_02") - truth.object_ids.begin());
-  const auto first_release = std::find_if(truth.events.begin(), truth.events.end(), [&](const ContactEvent& e) {
-    return e.object == box && e.type == EventType::Release;
-  });
-  ASSERT_NE(first_release, truth.events.end());
+  const WaiterVideo video("side", [](SynthOptions& o) { o.occlusion = true; });
+  const Demonstration truth = load_demonstration(video.s.truth);
+  const ContactEvent* first_release = release_after(truth, "YCBV_02");
+  ASSERT_TRUE(first_release);
+  const auto box = first_release->object;
   // Laid on its side: its up axis is horizontal at the release.
   ASSERT_LT(std::abs(first_release->poses[box].linear()(2, 2)), 0.1);
   const auto released_there = [&](const Demonstration& d) {
@@ -340,11 +338,10 @@ TEST(ModelTracker, ABoxLaidOnItsSideWhileHiddenIsFoundThere) {
              (e.poses[box].translation() - first_release->poses[box].translation()).norm() < 0.015;
     });
   };
-  EXPECT_TRUE(released_there(extract({})));
+  EXPECT_TRUE(released_there(video.extract()));
   ModelTrackerOptions standing_only;
   standing_only.rest_search_faces = false;
-  EXPECT_FALSE(released_there(extract(standing_only)));
-  fs::remove_all(dir);
+  EXPECT_FALSE(released_there(video.extract(standing_only)));
 }
 
 // A part tracked within 3 mm in frames 0-9, never reported under the board in frames 10-19:
@@ -454,22 +451,14 @@ TEST(ModelTracker, AStartFiveCentimetresOffIsCorrected) {
 // CLI's one extraction, the GUI's second and bench_extraction's twentieth agree; waiter_0 in
 // changing light, extracted twice in one process, had 11 and then 6 of its 12 events right).
 TEST(ModelTracker, TracksTheSameWhateverStateOpenCVsRandomGeneratorIsIn) {
-  const fs::path dir = fs::temp_directory_path() / ("demoplan_model_tracker_rng_" + std::to_string(::getpid()));
-  SynthOptions o;
-  o.data_dir = DEMOPLAN_DATA_DIR;
-  o.task = "waiter_0";
-  o.robot = "kmr_iiwa";
-  o.part_markers = false;
-  o.lighting = 0.3;
-  const SynthOutput s = write_synthetic_demonstration(o, dir.string());
-  const MarkerScene scene = load_marker_scene(s.scene);
-  cv::VideoCapture video(s.video);
+  const WaiterVideo video("rng", [](SynthOptions& o) { o.lighting = 0.3; });
+  cv::VideoCapture capture(video.s.video);
   std::vector<cv::Mat> frames(4);
-  for (auto& f : frames) ASSERT_TRUE(video.read(f));
+  for (auto& f : frames) ASSERT_TRUE(capture.read(f));
   auto track = [&](std::uint64_t seed) {
     cv::theRNG() = cv::RNG(seed);
-    const auto tracker = make_model_tracker(scene, s.scene, DEMOPLAN_DATA_DIR, load_tracker_init(s.init), s.init, {});
-    tracker->start({load_camera(s.camera), 30.0, static_cast<int>(frames.size())});
+    const auto tracker = video.tracker({});
+    tracker->start({load_camera(video.s.camera), 30.0, static_cast<int>(frames.size())});
     for (size_t f = 0; f < frames.size(); ++f) tracker->track(static_cast<int>(f), frames[f]);
     return tracker->finish();
   };
@@ -480,7 +469,6 @@ TEST(ModelTracker, TracksTheSameWhateverStateOpenCVsRandomGeneratorIsIn) {
       EXPECT_EQ(first.samples[k][f].valid, second.samples[k][f].valid) << "part " << k << ", frame " << f;
       EXPECT_TRUE(first.samples[k][f].pose.isApprox(second.samples[k][f].pose, 0.0)) << "part " << k << ", frame " << f;
     }
-  fs::remove_all(dir);
 }
 
 // A table seen from above and in front, a wall standing on it: the box is carried while a board
