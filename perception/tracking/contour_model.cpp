@@ -102,17 +102,87 @@ ContourModel::ContourModel(const RenderMesh& mesh, const ContourModelOptions& o)
   for (const auto& v : mesh.vertices) radius_ = std::max(radius_, (v.cast<double>() - centre_).norm());
   const RenderMesh silhouette = mesh.geometry();
   for (const auto& d : sphere_directions(o.views)) views_.push_back(render_view(silhouette, d, centre_, radius_, o));
+  index_views();
+}
+
+ContourModel::ContourModel(std::vector<ContourView> views, const Eigen::Vector3d& centre, double radius)
+    : views_(std::move(views)), centre_(centre), radius_(radius) {
+  index_views();
+}
+
+namespace {
+
+constexpr int kCellsPerEdge = 8;  // of each face of the cube: 384 cells of about 11 degrees
+
+// The cube face a direction passes through (0-5) and where on it, in [-1, 1] squared.
+int cube_face(const Eigen::Vector3d& d, Eigen::Vector2d& at) {
+  int axis = 0;
+  d.cwiseAbs().maxCoeff(&axis);
+  const int b = (axis + 1) % 3, c = (axis + 2) % 3;
+  at = Eigen::Vector2d(d[b], d[c]) / std::abs(d[axis]);
+  return 2 * axis + (d[axis] < 0 ? 1 : 0);
+}
+
+Eigen::Vector3d on_cube(int face, const Eigen::Vector2d& at) {
+  const int axis = face / 2, b = (axis + 1) % 3, c = (axis + 2) % 3;
+  Eigen::Vector3d p;
+  p[axis] = face % 2 ? -1.0 : 1.0;
+  p[b] = at.x(), p[c] = at.y();
+  return p.normalized();
+}
+
+int cell_of(int face, const Eigen::Vector2d& at) {
+  auto index = [](double x) { return std::clamp(static_cast<int>((x + 1) / 2 * kCellsPerEdge), 0, kCellsPerEdge - 1); };
+  return (face * kCellsPerEdge + index(at.y())) * kCellsPerEdge + index(at.x());
+}
+
+}  // namespace
+
+void ContourModel::index_views() {
+  // A view can be nearest to a direction d of a cell (at most r from the cell's centre c) only
+  // if it lies within (nearest to c) + 2r of c: the nearest to d is no farther from d than the
+  // one nearest to c, which is within (nearest to c) + r of d. The slack covers the float dots.
+  constexpr double kSlack = 0.01;  // rad
+  cell_views_.assign(6 * kCellsPerEdge * kCellsPerEdge, {});
+  std::vector<double> angles(views_.size());
+  const double cell = 2.0 / kCellsPerEdge;
+  for (int face = 0; face < 6; ++face)
+    for (int j = 0; j < kCellsPerEdge; ++j)
+      for (int i = 0; i < kCellsPerEdge; ++i) {
+        const Eigen::Vector2d low(-1 + i * cell, -1 + j * cell);
+        const Eigen::Vector3d c = on_cube(face, low + Eigen::Vector2d::Constant(cell / 2));
+        // The cell is the cone over a square; the cone of directions within an angle of c is
+        // convex, so the farthest direction of the cell is a corner.
+        double r = 0.0;
+        for (const auto& corner : {low, Eigen::Vector2d(low.x() + cell, low.y()), Eigen::Vector2d(low.x(), low.y() + cell),
+                                   Eigen::Vector2d(low.x() + cell, low.y() + cell)})
+          r = std::max(r, std::acos(std::clamp(c.dot(on_cube(face, corner)), -1.0, 1.0)));
+        double nearest = M_PI;
+        for (size_t v = 0; v < views_.size(); ++v) {
+          angles[v] = std::acos(std::clamp(c.dot(views_[v].direction.cast<double>().normalized()), -1.0, 1.0));
+          nearest = std::min(nearest, angles[v]);
+        }
+        std::vector<int>& in_cell = cell_views_[(face * kCellsPerEdge + j) * kCellsPerEdge + i];
+        for (size_t v = 0; v < views_.size(); ++v)
+          if (angles[v] <= nearest + 2 * r + kSlack) in_cell.push_back(static_cast<int>(v));
+      }
 }
 
 const ContourView& ContourModel::nearest_view(const Eigen::Vector3d& towards_camera) const {
   const Eigen::Vector3f d = towards_camera.normalized().cast<float>();
-  size_t best = 0;
-  float best_dot = -2.f;
-  for (size_t i = 0; i < views_.size(); ++i) {
-    const float dot = views_[i].direction.dot(d);
-    if (dot > best_dot) best_dot = dot, best = i;
-  }
-  return views_[best];
+  auto nearest_of = [&](auto&& indices) {
+    size_t best = 0;
+    float best_dot = -2.f;
+    for (const auto i : indices) {
+      const float dot = views_[i].direction.dot(d);
+      if (dot > best_dot) best_dot = dot, best = i;
+    }
+    return best;
+  };
+  if (!(towards_camera.cwiseAbs().maxCoeff() > 0.0) || !towards_camera.allFinite()) return views_.front();
+  Eigen::Vector2d at;
+  const int face = cube_face(towards_camera, at);
+  return views_[nearest_of(cell_views_[cell_of(face, at)])];
 }
 
 }  // namespace demoplan::perception

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "core/geometry/se3.h"
 #include "perception/render/render_mesh.h"
 
 namespace demoplan::perception {
@@ -34,17 +35,26 @@ class ContourModel {
 public:
   explicit ContourModel(const RenderMesh& mesh, const ContourModelOptions& options = {});
   // A model from its parts (as read back from a file, contour_model_file.h).
-  ContourModel(std::vector<ContourView> views, const Eigen::Vector3d& centre, double radius)
-      : views_(std::move(views)), centre_(centre), radius_(radius) {}
+  ContourModel(std::vector<ContourView> views, const Eigen::Vector3d& centre, double radius);
 
-  // The view whose direction is nearest to `towards_camera` (part frame, need not be unit).
+  // The view whose direction is nearest to `towards_camera` (part frame, need not be unit; of
+  // equally near ones the first).
   const ContourView& nearest_view(const Eigen::Vector3d& towards_camera) const;
+  // The view nearest to where the camera is seen from the part posed at `camera_T_part`.
+  const ContourView& view_from(const Pose& camera_T_part) const {
+    return nearest_view(-(camera_T_part.linear().transpose() * camera_T_part.translation()) - centre_);
+  }
   const std::vector<ContourView>& views() const { return views_; }
   const Eigen::Vector3d& centre() const { return centre_; }  // of the mesh's bounding box
   double radius() const { return radius_; }                   // bounding sphere about centre()
 
 private:
+  void index_views();
+
   std::vector<ContourView> views_;
+  // Per cell of a cube around the sphere of directions, the views that can be nearest to a
+  // direction in it, in order: nearest_view looks at a few views instead of all (same answer).
+  std::vector<std::vector<int>> cell_views_;
   Eigen::Vector3d centre_;
   double radius_ = 0.0;
 };

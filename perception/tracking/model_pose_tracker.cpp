@@ -6,6 +6,7 @@
 #include <future>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 #include <tuple>
 #include <utility>
 
@@ -13,6 +14,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "perception/render/part_meshes.h"
 #include "perception/render/rasterizer.h"
 #include "perception/tracking/contour_model_file.h"
@@ -158,6 +160,15 @@ Rasterizer ModelPoseTracker::occlusion_rasterizer() const {
                (s.intrinsics.cy + 0.5) * k - 0.5, Pose::Identity());
   r.clear({0, 0, 0}, {0, 0, 0});
   return r;
+}
+
+void ModelPoseTracker::on_search_threads(size_t count, size_t chunk, const std::function<void(size_t)>& work) const {
+  const int threads = options_.search_threads > 0 ? options_.search_threads
+                                                  : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  chunk = std::max<size_t>(chunk, 1);
+  parallel_for((count + chunk - 1) / chunk, threads, [&](size_t c) {
+    for (size_t i = c * chunk; i < std::min(count, (c + 1) * chunk); ++i) work(i);
+  });
 }
 
 OcclusionMap ModelPoseTracker::occlusion_map(int skip) const {
@@ -640,17 +651,21 @@ RegionFrameResult ModelPoseTracker::search(const cv::Mat& image, int k, const Oc
     for (double dx = -reach; dx <= reach; dx += step) {
       Pose T = last;
       T.translation() += Eigen::Vector3d(dx * c.z() / s.intrinsics.fx, dy * c.z() / s.intrinsics.fy, 0.0);
-      candidates.push_back({contour_contrast(image, s.intrinsics, model, s.colors[k], T), T});
+      candidates.push_back({0.0, T});
     }
+  on_search_threads(candidates.size(), 16, [&](size_t i) {
+    candidates[i].first = contour_contrast(image, s.intrinsics, model, s.colors[k], candidates[i].second);
+  });
   const size_t tries = std::min<size_t>(options_.search_tries, candidates.size());
   std::partial_sort(candidates.begin(), candidates.begin() + tries, candidates.end(),
                     [](auto& a, auto& b) { return a.first > b.first; });
-  for (size_t i = 0; i < tries; ++i) {
-    // At the last depth: a candidate across the view says nothing about it.
-    const RegionFrameResult r =
-        track_region(image, s.intrinsics, model, s.colors[k], candidates[i].second, map, k, options_.region, true);
-    if (i == 0 || r.contrast > best.contrast) best = r;
-  }
+  // At the last depth: a candidate across the view says nothing about it.
+  std::vector<RegionFrameResult> tracked(tries);
+  on_search_threads(tries, 1, [&](size_t i) {
+    tracked[i] = track_region(image, s.intrinsics, model, s.colors[k], candidates[i].second, map, k, options_.region, true);
+  });
+  for (size_t i = 0; i < tries; ++i)
+    if (i == 0 || tracked[i].contrast > best.contrast) best = tracked[i];
   return best;
 }
 
@@ -667,22 +682,24 @@ bool ModelPoseTracker::within_rest_hold(size_t k, const Pose& measured) const {
 
 std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k) const {
   const State& s = *state_;
-  if (std::optional<RegionFrameResult> found = rest_search(image, k, options_.rest_search_radii, false)) return found;
+  // Scored on what the furniture and the other parts leave visible (its own stale pose hides nothing).
+  const OcclusionMap map = occlusion_map(k);
+  if (std::optional<RegionFrameResult> found = rest_search(image, k, map, options_.rest_search_radii, false)) return found;
   // Not within the plain reach: the longer it has been lost, the farther it may have been
   // carried before it was put down. Beyond the plain reach only on the evidence of a part in
   // full view.
   const int frames = std::max(s.unseen[k] - options_.rest_search_growth_after, 0);
   const double radii = std::min(options_.rest_search_radii + options_.rest_search_growth * frames, options_.rest_search_max_radii);
   if (radii > options_.rest_search_radii)
-    if (std::optional<RegionFrameResult> found = rest_search(image, k, radii, true)) return found;
+    if (std::optional<RegionFrameResult> found = rest_search(image, k, map, radii, true)) return found;
   // Not as it stood: perhaps laid on a side (a box put down on its side), within the plain reach
   // (the search beyond it on the sides too measured slower and found nothing more).
   if (!options_.rest_search_faces) return std::nullopt;
-  return rest_search(image, k, options_.rest_search_radii, false, true);
+  return rest_search(image, k, map, options_.rest_search_radii, false, true);
 }
 
-std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k, double radii, bool beyond,
-                                                               bool other_faces) const {
+std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k, const OcclusionMap& map,
+                                                               double radii, bool beyond, bool other_faces) const {
   const State& s = *state_;
   const ContourModel& model = *contours_[k];
   const Pose& last = s.camera_T_part[k];
@@ -722,18 +739,19 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
       candidates.push_back(c);
     }
   }
-  // Scored on what the furniture and the other parts leave visible (its own stale pose hides
-  // nothing), first over a band as wide as half the grid's step: the candidates are that far
-  // apart. A candidate that shows too little of itself cannot be told from anything else.
-  const OcclusionMap map = occlusion_map(k);
+  // Scored first over a band as wide as half the grid's step: the candidates are that far apart.
+  // A candidate that shows too little of itself cannot be told from anything else.
   auto score = [&](const Pose& T, int band, int stride = 2) {
     const VisibleContrast v = visible_contrast(image, s.intrinsics, model, s.colors[k], T, map, k, 4, band, stride);
     return v.visible >= options_.rest_visible_fraction * v.lines ? v.contrast : -2.0;
   };
+  std::vector<double> scores(candidates.size());
+  on_search_threads(candidates.size(), 64, [&](size_t i) {
+    scores[i] = score(candidates[i].camera_T_part, std::max(2, static_cast<int>(step / 8)), 4);
+  });
   std::vector<std::pair<double, size_t>> scored;
   for (size_t i = 0; i < candidates.size(); ++i)
-    if (const double v = score(candidates[i].camera_T_part, std::max(2, static_cast<int>(step / 8)), 4); v > -2.0)
-      scored.push_back({v, i});
+    if (scores[i] > -2.0) scored.push_back({scores[i], i});
   std::sort(scored.begin(), scored.end(), [](auto& a, auto& b) { return a.first > b.first; });
   // The best at distinct places or turns (a step apart in the image, or turned by more than an
   // eighth: a box turned half round has nearly the same outline, and only the best fit of the
@@ -750,7 +768,8 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     if (std::none_of(picked.begin(), picked.end(), [&](const RestingCandidate& p) { return same_place(p, candidates[i], step); }))
       picked.push_back(candidates[i]);
   }
-  for (auto& p : picked) {
+  on_search_threads(picked.size(), 1, [&](size_t i) {
+    RestingCandidate& p = picked[i];
     for (double d = step / 2, a = (other_faces ? 2 : 1) * M_PI / turn_count; d >= 2.0; d /= 2, a /= 2) {
       // Scored over a band as wide as the step: a finer one would not see the way from afar.
       const int band = std::max(2, static_cast<int>(d / 4));
@@ -772,7 +791,7 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
         }
       }
     }
-  }
+  });
   // The best few of those, at distinct places, tracked from.
   std::vector<std::pair<double, size_t>> climbed;
   for (size_t i = 0; i < picked.size(); ++i) climbed.push_back({score(picked[i].camera_T_part, 2), i});
@@ -782,13 +801,17 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     if (tries.size() < static_cast<size_t>(std::max(options_.rest_search_tries, 0)) &&
         std::none_of(tries.begin(), tries.end(), [&](const RestingCandidate& q) { return same_place(picked[i], q, step / 2); }))
       tries.push_back(picked[i]);
+  // Each tracked from at the support's depth: it is a better cue than the silhouette's size, half hidden.
+  std::vector<RegionFrameResult> tracked(tries.size());
+  on_search_threads(tries.size(), 1, [&](size_t i) {
+    tracked[i] = track_region(image, s.intrinsics, model, s.colors[k], tries[i].camera_T_part, map, k, options_.region, true);
+  });
   std::optional<RegionFrameResult> best;
-  for (const auto& t : tries) {
+  for (size_t i = 0; i < tries.size(); ++i) {
+    const RestingCandidate& t = tries[i];
     const Eigen::Vector3d part_up = orientations[t.face].transpose().col(2);  // the part's axis up as put down
     const Pose& candidate = t.camera_T_part;
-    // At the support's depth: it is a better cue than the silhouette's size, half hidden.
-    const RegionFrameResult r =
-        track_region(image, s.intrinsics, model, s.colors[k], candidate, map, k, options_.region, true);
+    const RegionFrameResult& r = tracked[i];
     const int visible = r.lines - r.hidden_lines;
     if (visible < options_.rest_visible_fraction * r.lines || r.used_lines < options_.rest_used_fraction * visible ||
         r.contrast < options_.rest_contrast * s.reference_contrast[k])

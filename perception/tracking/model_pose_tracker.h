@@ -17,6 +17,7 @@
 // (ModelTrackerOptions::ride_prediction).
 #include <memory>
 #include <optional>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -161,6 +162,9 @@ struct ModelTrackerOptions {
   double settle_visible_fraction = 0.7;  // of its silhouette: a start less visible is kept as it is
   double settle_contrast_gain = 0.03;  // a settled start is taken when it stands out this much more
   double settle_depth_contrast_gain = 0.1;  // and moved in depth, this much more
+  // Threads scoring a lost part's candidate poses (0: one per core); the tracks are the same
+  // whatever the number.
+  int search_threads = 0;
 };
 
 class ModelPoseTracker final : public PoseTracker {
@@ -187,6 +191,9 @@ private:
   // millimetres to centimetres off).
   void settle_start(const cv::Mat& image, size_t k);
   Rasterizer occlusion_rasterizer() const;  // at the occlusion map's scale, cleared
+  // work(i) for every i in [0, count), `chunk` at a time on the search threads (each i must
+  // write only its own result).
+  void on_search_threads(size_t count, size_t chunk, const std::function<void(size_t)>& work) const;
   // Where the centre of part k's model shows in the image at that pose, relative to the
   // principal point (only differences and distances of these are used).
   Eigen::Vector2d centre_in_image(size_t k, const Pose& camera_T_part) const;
@@ -205,8 +212,9 @@ private:
   std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k) const;
   // The search within `radii` of its radii (beyond: only outside the plain reach, on stricter evidence).
   // On the faces other than the last rest's (`other_faces`: rest_search_faces), on the same strict evidence.
-  std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, double radii, bool beyond,
-                                               bool other_faces = false) const;
+  // `map`: what the furniture and the other parts hide (occlusion_map(k)).
+  std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, const OcclusionMap& map, double radii,
+                                               bool beyond, bool other_faces = false) const;
   // A part not measured at its rest since the last frame, while parts that rested beside it
   // left together as one body, may have ridden with them: its ride is noted; a ride whose
   // riders went apart no longer tells where it is, and is dropped.

@@ -11,7 +11,6 @@ namespace demoplan::perception {
 namespace {
 
 constexpr double kNear = 0.05;       // m: contour points nearer the camera are not used
-constexpr float kOcclusionMargin = 0.01f;  // m
 
 Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   Eigen::Matrix3d S;
@@ -44,9 +43,9 @@ bool project(const ContourPoint& cp, const Pose& T, const PinholeIntrinsics& K, 
 }
 
 bool pixel_at(const cv::Mat& image, const Eigen::Vector2d& q, cv::Vec3b& out) {
-  const int x = static_cast<int>(std::lround(q.x())), y = static_cast<int>(std::lround(q.y()));
-  if (x < 0 || y < 0 || x >= image.cols || y >= image.rows) return false;
-  out = image.at<cv::Vec3b>(y, x);
+  // The pixel lround would pick, without its library call (asked for every sample of a line).
+  if (!(q.x() > -0.5 && q.y() > -0.5 && q.x() < image.cols - 0.5 && q.y() < image.rows - 0.5)) return false;
+  out = image.at<cv::Vec3b>(static_cast<int>(q.y() + 0.5), static_cast<int>(q.x() + 0.5));
   return true;
 }
 
@@ -191,13 +190,6 @@ Pose newton_steps(const Pass& pass, const std::vector<SurfacePoint>& points, con
 
 }  // namespace
 
-bool OcclusionMap::hides(double x, double y, int part, float z) const {
-  const int u = static_cast<int>(x * scale), v = static_cast<int>(y * scale);
-  if (u < 0 || v < 0 || u >= labels.cols || v >= labels.rows) return false;
-  const int label = labels.at<uchar>(v, u);
-  return label != 0 && label != part + 1 && depth.at<float>(v, u) < z - kOcclusionMargin;
-}
-
 RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& K, const ContourModel& model,
                                const ColorHistograms& colors, const Pose& camera_T_part, const OcclusionMap& occlusion,
                                int part, const RegionTrackingOptions& o, bool hold_depth,
@@ -207,8 +199,7 @@ RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& K,
   std::optional<Eigen::Vector3d> held_ray;
   if (hold_depth) held_ray = (T * model.centre()).normalized();
   for (const int scale : o.scales) {
-    const Eigen::Vector3d towards_camera = T.inverse().translation() - model.centre();
-    const ContourView& view = model.nearest_view(towards_camera);
+    const ContourView& view = model.view_from(T);
     const Pass pass = correspondence_pass(image, K, view, colors, T, occlusion, part, scale, o);
     result.lines = static_cast<int>(view.points.size());
     result.used_lines = static_cast<int>(pass.lines.size());
@@ -223,7 +214,7 @@ RegionFrameResult track_region(const cv::Mat& image, const PinholeIntrinsics& K,
 
 double contour_contrast(const cv::Mat& image, const PinholeIntrinsics& K, const ContourModel& model,
                         const ColorHistograms& colors, const Pose& T, int samples, int step) {
-  const ContourView& view = model.nearest_view(T.inverse().translation() - model.centre());
+  const ContourView& view = model.view_from(T);
   double sum = 0.0;
   int lines = 0;
   for (size_t j = 0; j < view.points.size(); j += 2) {  // every other point: enough for a score
@@ -246,7 +237,7 @@ double contour_contrast(const cv::Mat& image, const PinholeIntrinsics& K, const 
 void learn_colors(const cv::Mat& image, const PinholeIntrinsics& K, const ContourModel& model, const Pose& T,
                   const OcclusionMap& occlusion, int part, ColorHistograms& colors, const RegionTrackingOptions& o,
                   bool foreground) {
-  const ContourView& view = model.nearest_view(T.inverse().translation() - model.centre());
+  const ContourView& view = model.view_from(T);
   for (const auto& cp : view.points) {
     Projected p;
     if (!project(cp, T, K, p)) continue;

@@ -22,13 +22,20 @@ struct PinholeIntrinsics {
 // estimates): lines of one part where something nearer covers the part are left out.
 struct OcclusionMap {
   static constexpr int kFurniture = 255;
+  static constexpr float kMargin = 0.01f;  // m: nearer by less does not hide
   cv::Mat labels;  // CV_8U, 0: nothing, k + 1: part k, kFurniture: the furniture
   cv::Mat depth;   // CV_32F, m
   double scale = 0.5;  // map pixels per image pixel
 
   bool empty() const { return labels.empty(); }
   // True when a part other than `part` is in front of depth `z` at image pixel (x, y).
-  bool hides(double x, double y, int part, float z) const;
+  // (Here, not in the .cpp: it is asked for every sample of every line.)
+  bool hides(double x, double y, int part, float z) const {
+    const int u = static_cast<int>(x * scale), v = static_cast<int>(y * scale);
+    if (u < 0 || v < 0 || u >= labels.cols || v >= labels.rows) return false;
+    const int label = labels.at<uchar>(v, u);
+    return label != 0 && label != part + 1 && depth.at<float>(v, u) < z - kMargin;
+  }
 };
 
 // A point on the part (its frame) and where the image shows it (surface_flow.h).

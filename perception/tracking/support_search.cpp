@@ -57,7 +57,7 @@ double centre_height(const RenderMesh& mesh, const Eigen::Vector3d& centre, cons
 bool inside_furniture_box(const std::vector<FurnitureMesh>& furniture, const Eigen::Vector3d& world_point) {
   for (const auto& f : furniture) {
     if (!f.box) continue;
-    const Eigen::Vector3d p = f.world_T_mesh.inverse() * world_point;
+    const Eigen::Vector3d p = f.world_T_mesh.linear().transpose() * (world_point - f.world_T_mesh.translation());
     if ((p.cwiseAbs() - *f.box / 2).maxCoeff() < 0) return true;
   }
   return false;
@@ -118,7 +118,7 @@ VisibleContrast visible_contrast(const cv::Mat& image, const PinholeIntrinsics& 
                                  const ColorHistograms& colors, const Pose& T, const OcclusionMap& occlusion, int part,
                                  int samples, int step, int stride) {
   VisibleContrast result;
-  const ContourView& view = model.nearest_view(T.inverse().translation() - model.centre());
+  const ContourView& view = model.view_from(T);
   double sum = 0.0;
   auto inside = [&](const Eigen::Vector2d& q) { return q.x() >= 0 && q.y() >= 0 && q.x() < image.cols - 0.5 && q.y() < image.rows - 0.5; };
   for (size_t j = 0; j < view.points.size(); j += std::max(stride, 1)) {
@@ -135,9 +135,10 @@ VisibleContrast visible_contrast(const cv::Mat& image, const PinholeIntrinsics& 
     for (int i = 0; i < samples && ok; ++i) {
       const Eigen::Vector2d a = pixel - (0.5 + i * step) * normal, b = pixel + (0.5 + i * step) * normal;
       ok = inside(a) && inside(b) && (occlusion.empty() || !occlusion.hides(a.x(), a.y(), part, static_cast<float>(X.z())));
+      // Rounded to the nearest pixel (inside the image, so from 0 on: no need for lround's call).
       if (ok)
-        in += colors.foreground_probability(image.at<cv::Vec3b>(static_cast<int>(std::lround(a.y())), static_cast<int>(std::lround(a.x())))),
-            out += colors.foreground_probability(image.at<cv::Vec3b>(static_cast<int>(std::lround(b.y())), static_cast<int>(std::lround(b.x()))));
+        in += colors.foreground_probability(image.at<cv::Vec3b>(static_cast<int>(a.y() + 0.5), static_cast<int>(a.x() + 0.5))),
+            out += colors.foreground_probability(image.at<cv::Vec3b>(static_cast<int>(b.y() + 0.5), static_cast<int>(b.x() + 0.5)));
     }
     if (!ok) continue;
     sum += (in - out) / samples;

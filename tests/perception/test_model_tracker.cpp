@@ -9,6 +9,7 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <random>
 
 #include <opencv2/videoio.hpp>
 
@@ -116,6 +117,36 @@ TEST(ContourModel, PointsLieOnTheSilhouetteOfTheMesh) {
   const Eigen::Vector3d up(0.1, 0.2, 1.0);
   const ContourView& nearest = model.nearest_view(up);
   for (const auto& v : model.views()) EXPECT_LE(v.direction.dot(up.normalized().cast<float>()), nearest.direction.dot(up.normalized().cast<float>()));
+}
+
+// nearest_view looks only at the views that can be nearest in a cell of directions: it must
+// answer as a look at every view does (the largest dot, the first of equal ones), on the cells'
+// edges and corners too.
+TEST(ContourModel, NearestViewIsTheViewALookAtEveryViewFinds) {
+  for (const int n : {642, 60, 7}) {
+    std::vector<ContourView> views;
+    for (const auto& d : sphere_directions(n)) views.push_back({d.cast<float>(), {}});
+    const ContourModel model(views, Eigen::Vector3d::Zero(), 0.1);
+    std::vector<Eigen::Vector3d> asked;
+    std::mt19937 random(7);
+    std::normal_distribution<double> normal;
+    for (int i = 0; i < 100000; ++i) asked.emplace_back(normal(random), normal(random), normal(random));
+    for (const double a : {-1.0, -0.75, -0.5, 0.0, 0.25, 0.5, 1.0})  // on cell boundaries (8 cells an edge)
+      for (const double b : {-1.0, -0.25, 0.0, 0.75, 1.0})
+        for (const double sign : {-1.0, 1.0}) {
+          asked.emplace_back(sign, a, b), asked.emplace_back(a, sign, b), asked.emplace_back(a, b, sign);
+          asked.emplace_back(sign * 3.0, a * 3.0, b * 3.0);  // not unit
+        }
+    for (const auto& v : views) asked.push_back(v.direction.cast<double>());  // exact ties with a view
+    for (const auto& d : asked) {
+      const Eigen::Vector3f u = d.normalized().cast<float>();
+      size_t best = 0;
+      for (size_t i = 1; i < views.size(); ++i)
+        if (views[i].direction.dot(u) > views[best].direction.dot(u)) best = i;
+      ASSERT_EQ(&model.nearest_view(d), &model.views()[best]) << n << " views, direction " << d.transpose();
+    }
+    EXPECT_EQ(&model.nearest_view(Eigen::Vector3d::Zero()), &model.views()[0]);
+  }
 }
 
 TEST(ContourModelFile, ReadsBackWhatItWroteAndNothingElse) {
@@ -531,7 +562,7 @@ PoseTracks track_table_scene(const TableScene& t, ModelTrackerOptions o = {}) {
   return tracker.finish();
 }
 
-TEST(ModelTracker, FindsAPartPutDownHalfBehindAWall) {
+TableScene box_put_down_behind_a_wall() {
   std::vector<Pose> truth;
   std::vector<bool> covered;
   for (int f = 0; f < 36; ++f) {
@@ -542,7 +573,12 @@ TEST(ModelTracker, FindsAPartPutDownHalfBehindAWall) {
     truth.push_back(p);
     covered.push_back(f >= 10 && f < 20);
   }
-  const TableScene scene = render_table_scene(truth, covered);
+  return render_table_scene(truth, covered);
+}
+
+TEST(ModelTracker, FindsAPartPutDownHalfBehindAWall) {
+  const TableScene scene = box_put_down_behind_a_wall();
+  const std::vector<Pose>& truth = scene.clip.truth;
   const PoseTracks tracks = track_table_scene(scene);
   const int found = found_after_the_board(tracks, truth);
   ASSERT_GE(found, 20) << "never found again";
@@ -566,6 +602,24 @@ TEST(ModelTracker, FindsAPartPutDownHalfBehindAWall) {
   without.rest_search = false;
   const PoseTracks lost = track_table_scene(scene, without);
   for (int f = 20; f < 36; ++f) EXPECT_FALSE(lost.samples[0][f].valid) << "frame " << f << " found without the rest search";
+}
+
+// The searches score their candidates on several threads: the tracks must not depend on how many.
+TEST(ModelTracker, TracksTheSameOnOneSearchThreadOrThree) {
+  const TableScene scene = box_put_down_behind_a_wall();
+  ModelTrackerOptions one, three;
+  one.search_threads = 1;
+  three.search_threads = 3;
+  const PoseTracks a = track_table_scene(scene, one), b = track_table_scene(scene, three);
+  int found = 0;  // behind the wall, after the board: the rest search ran
+  for (size_t f = 0; f < scene.clip.truth.size(); ++f) {
+    ASSERT_EQ(a.samples[0][f].valid, b.samples[0][f].valid) << "frame " << f;
+    if (!a.samples[0][f].valid) continue;
+    found += f >= 20;
+    EXPECT_TRUE(a.samples[0][f].pose.isApprox(b.samples[0][f].pose, 0.0)) << "frame " << f;
+    EXPECT_EQ(a.samples[0][f].confidence, b.samples[0][f].confidence) << "frame " << f;
+  }
+  EXPECT_GE(found, 3);
 }
 
 // Two boxes, one behind the other: the one in front hides the lower part of the one behind, and
