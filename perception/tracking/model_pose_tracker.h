@@ -86,6 +86,10 @@ struct ModelTrackerOptions {
   // Not found as it stood: looked for laid on each side of its box (a box put down on its side),
   // within rest_search_radii, half as many turns each; taken only in full view, as beyond the reach.
   bool rest_search_faces = true;
+  // A box turned half round about the vertical shows the same outline: a find is turned so when
+  // the part's print, drawn there, differs from the frame by less than this fraction of what it
+  // differs as found (appearance_error.h; 0: never).
+  double rest_search_half_turn_ratio = 0.8;
   double rest_search_density = 4.0;     // grid points per radius
   int rest_search_climbs = 12;          // best candidates moved and turned while they stand out more
   int rest_search_tries = 4;            // of those, tracked from
@@ -215,6 +219,9 @@ private:
   // `map`: what the furniture and the other parts hide (occlusion_map(k)).
   std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, const OcclusionMap& map, double radii,
                                                bool beyond, bool other_faces = false) const;
+  // A find of the rest search, or the same turned half round about the vertical when the part's
+  // print says so (rest_search_half_turn_ratio).
+  RegionFrameResult by_print(const cv::Mat& image, int k, const OcclusionMap& map, const RegionFrameResult& found) const;
   // A part not measured at its rest since the last frame, while parts that rested beside it
   // left together as one body, may have ridden with them: its ride is noted; a ride whose
   // riders went apart no longer tells where it is, and is dropped.

@@ -1,0 +1,23 @@
+#pragma once
+// How unlike a part's own look the image is where the part would show: its mesh drawn with its
+// texture (or colour) at a pose, compared with the frame pixel by pixel. A box turned half
+// round about its vertical has the same outline, and region tracking (which sees only the
+// outline and the part's colours) cannot tell the two apart; its print can.
+#include <opencv2/core.hpp>
+
+#include "core/geometry/se3.h"
+#include "perception/render/render_mesh.h"
+#include "perception/tracking/region_pose.h"
+
+namespace demoplan::perception {
+
+// The mean absolute difference (0-255, per channel) between `image` and `mesh` drawn at
+// `camera_T_part` (by the renderer, its light fixed in the world: `world_T_camera`), over the pixels where it shows (`occlusion`: what hides it; `part` its index
+// there), both blurred by 5 px first (a pose a pixel off does not make the print's edges
+// differ), the drawing first scaled per channel to the image's mean there (the video's light).
+// Negative when fewer than `min_pixels` show.
+double appearance_error(const cv::Mat& image, const PinholeIntrinsics& camera, const Pose& world_T_camera,
+                        const RenderMesh& mesh, const Pose& camera_T_part, const OcclusionMap& occlusion, int part,
+                        int min_pixels = 50);
+
+}  // namespace demoplan::perception
