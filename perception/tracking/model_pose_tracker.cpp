@@ -16,8 +16,8 @@
 #include "core/error.h"
 #include "core/parallel_for.h"
 #include "perception/render/part_meshes.h"
-#include "perception/tracking/appearance_error.h"
 #include "perception/render/rasterizer.h"
+#include "perception/tracking/appearance_error.h"
 #include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/light_correction.h"
 #include "perception/tracking/rest_hold.h"
@@ -851,8 +851,8 @@ RegionFrameResult ModelPoseTracker::by_print(const cv::Mat& image, int k, const 
   const double half_round = appearance_error(image, s.intrinsics, s.world_T_camera, models_[k].mesh, turned, map, k);
   if (as_found < 0 || half_round < 0 || half_round > options_.rest_search_half_turn_ratio * as_found) return found;
   // Its print says so, if its outline stands out there nearly as well as the find's (the same
-  // outline, up to the mesh's own asymmetry): the find's place, turned. (Measured from there, the
-  // centre moves with the mesh's asymmetry: tunnel_0's last rest 6.1 -> 12.8 mm off.)
+  // outline, up to the mesh's own asymmetry): the find's place, turned. (Tracked on from there,
+  // the centre moves with that asymmetry: tunnel_0's last rest 12.8 mm off, the find's 2.2.)
   const RegionFrameResult r = track_region(image, s.intrinsics, *contours_[k], s.colors[k], turned, map, k, options_.region, true);
   if (r.contrast < 0.9 * found.contrast || r.used_lines < 0.9 * found.used_lines) return found;
   RegionFrameResult out = found;

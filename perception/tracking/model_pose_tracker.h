@@ -15,9 +15,9 @@
 // and reported there only if that is borne out (ModelTrackerOptions::hold_resting); one that
 // parts resting beside it rode away from is looked for where the same ride would have taken it
 // (ModelTrackerOptions::ride_prediction).
+#include <functional>
 #include <memory>
 #include <optional>
-#include <functional>
 #include <string>
 #include <vector>
 
