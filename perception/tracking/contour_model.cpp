@@ -144,6 +144,8 @@ void ContourModel::index_views() {
   // one nearest to c, which is within (nearest to c) + r of d. The slack covers the float dots.
   constexpr double kSlack = 0.01;  // rad
   cell_views_.assign(6 * kCellsPerEdge * kCellsPerEdge, {});
+  std::vector<Eigen::Vector3d> directions;
+  for (const auto& v : views_) directions.push_back(v.direction.cast<double>().normalized());
   std::vector<double> angles(views_.size());
   const double cell = 2.0 / kCellsPerEdge;
   for (int face = 0; face < 6; ++face)
@@ -159,7 +161,7 @@ void ContourModel::index_views() {
           r = std::max(r, std::acos(std::clamp(c.dot(on_cube(face, corner)), -1.0, 1.0)));
         double nearest = M_PI;
         for (size_t v = 0; v < views_.size(); ++v) {
-          angles[v] = std::acos(std::clamp(c.dot(views_[v].direction.cast<double>().normalized()), -1.0, 1.0));
+          angles[v] = std::acos(std::clamp(c.dot(directions[v]), -1.0, 1.0));
           nearest = std::min(nearest, angles[v]);
         }
         std::vector<int>& in_cell = cell_views_[(face * kCellsPerEdge + j) * kCellsPerEdge + i];
@@ -169,20 +171,17 @@ void ContourModel::index_views() {
 }
 
 const ContourView& ContourModel::nearest_view(const Eigen::Vector3d& towards_camera) const {
-  const Eigen::Vector3f d = towards_camera.normalized().cast<float>();
-  auto nearest_of = [&](auto&& indices) {
-    size_t best = 0;
-    float best_dot = -2.f;
-    for (const auto i : indices) {
-      const float dot = views_[i].direction.dot(d);
-      if (dot > best_dot) best_dot = dot, best = i;
-    }
-    return best;
-  };
   if (!(towards_camera.cwiseAbs().maxCoeff() > 0.0) || !towards_camera.allFinite()) return views_.front();
+  const Eigen::Vector3f d = towards_camera.normalized().cast<float>();
   Eigen::Vector2d at;
   const int face = cube_face(towards_camera, at);
-  return views_[nearest_of(cell_views_[cell_of(face, at)])];
+  size_t best = 0;
+  float best_dot = -2.f;
+  for (const int i : cell_views_[cell_of(face, at)]) {
+    const float dot = views_[i].direction.dot(d);
+    if (dot > best_dot) best_dot = dot, best = static_cast<size_t>(i);
+  }
+  return views_[best];
 }
 
 }  // namespace demoplan::perception

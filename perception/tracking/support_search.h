@@ -1,11 +1,11 @@
 #pragma once
 // Where a lost part may have come to rest: standing on a support of the furniture (a table's
 // top, a shelf's board) as it stood at its last rest or laid on a side, turned about the
-// vertical. A carried part
-// that the tracker lost is put down somewhere, often half behind furniture; a search among the
-// poses where it could physically rest has three degrees of freedom (across the support and the
-// turn) instead of six, and its depth comes from the support rather than from the silhouette's
-// size. The world's z points up (as in the tasks and cells).
+// vertical. A carried part that the tracker lost is put down somewhere, often half behind
+// furniture; a search among the poses where it could physically rest has three degrees of
+// freedom (across the support and the turn) instead of six, and its depth comes from the
+// support rather than from the silhouette's size. The world's z points up (as in the tasks and
+// cells).
 #include <array>
 #include <optional>
 #include <vector>

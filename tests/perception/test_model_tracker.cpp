@@ -643,7 +643,7 @@ Pose turned_half_round(const Pose& world_T_box) {
   return p;
 }
 
-double yaw_error_deg(const Pose& a, const Pose& b) {
+double rotation_error_deg(const Pose& a, const Pose& b) {
   return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle() * 180 / M_PI;
 }
 
@@ -677,10 +677,10 @@ TEST(ModelTracker, APartFoundAtRestIsTurnedTheWayItsPrintShows) {
   const PoseTracks by_outline = track_table_scene(scene, outline_only);
   int reported = 0, turned_by_outline = 0;
   for (int f = 20; f < 36; ++f) {
-    if (by_outline.samples[0][f].valid && yaw_error_deg(by_outline.samples[0][f].pose, scene.clip.truth[f]) > 170) ++turned_by_outline;
+    if (by_outline.samples[0][f].valid && rotation_error_deg(by_outline.samples[0][f].pose, scene.clip.truth[f]) > 170) ++turned_by_outline;
     if (!tracks.samples[0][f].valid) continue;
     ++reported;
-    EXPECT_LT(yaw_error_deg(tracks.samples[0][f].pose, scene.clip.truth[f]), 5.0) << "frame " << f;
+    EXPECT_LT(rotation_error_deg(tracks.samples[0][f].pose, scene.clip.truth[f]), 5.0) << "frame " << f;
     EXPECT_LT(error_mm(tracks.samples[0][f], scene.clip.truth[f]), 8.0) << "frame " << f;
   }
   // (Found at 20 and 21; then held, half behind the wall, unmeasured.)
