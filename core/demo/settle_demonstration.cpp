@@ -4,7 +4,8 @@
 
 namespace demoplan {
 
-Demonstration settle_on_supports(const Scene& scene, Demonstration d, const SettleOptions& options) {
+Demonstration settle_on_supports(const Scene& scene, Demonstration d, const SettleOptions& options,
+                                 const EventSupports& moving) {
   std::vector<std::vector<Eigen::Vector3d>> furniture;
   for (const auto& s : support_polygons(scene))
     if (s.robot_link < 0) furniture.push_back(s.vertices);
@@ -13,11 +14,17 @@ Demonstration settle_on_supports(const Scene& scene, Demonstration d, const Sett
   for (size_t o = 0; o < d.object_ids.size(); ++o)
     for (const auto& so : scene.objects)
       if (so.id == d.object_ids[o]) faces[o] = object_contact_polygons(so);
-  for (auto& e : d.events)
+  SnapOptions onto_moving = options.snap;
+  onto_moving.max_distance = options.moving_max_distance;
+  for (size_t i = 0; i < d.events.size(); ++i) {
+    auto& e = d.events[i];
     for (size_t o = 0; o < e.poses.size() && o < faces.size(); ++o) {
       if (faces[o].empty() || !e.pose_frame(static_cast<int>(o)).empty()) continue;
-      if (auto snapped = snap_to_support(faces[o], e.poses[o], furniture, options.snap)) e.poses[o] = snapped->pose;
+      auto snapped = snap_to_support(faces[o], e.poses[o], furniture, options.snap);
+      if (!snapped && i < moving.size()) snapped = snap_to_support(faces[o], e.poses[o], moving[i], onto_moving);
+      if (snapped) e.poses[o] = snapped->pose;
     }
+  }
   return d;
 }
 

@@ -1,9 +1,13 @@
 #include "perception/extraction/extract_demonstration.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
+#include "core/demo/settle_demonstration.h"
 #include "core/error.h"
+#include "core/scene/support.h"
 #include "perception/camera/board_extrinsics.h"
 #include "perception/events/demonstration_builder.h"
 #include "perception/events/track_smoothing.h"
@@ -23,6 +27,42 @@ void check_rows(const PoseTracks& tracks, const PoseTracker& tracker) {
   bool same = tracks.object_ids.size() == parts.size();
   for (size_t k = 0; same && k < parts.size(); ++k) same = tracks.object_ids[k] == parts[k].id;
   if (!same) throw std::logic_error("pose tracker '" + tracker.name() + "': its tracks are not in the order of its parts");
+}
+
+// The tops of the parts not planned for (trays) at each event's frame, where last seen then:
+// the supports the planning parts resting on them are settled on.
+EventSupports carrier_tops(const PoseTracks& tracks, const std::vector<TrackedPart>& parts, const Demonstration& d) {
+  EventSupports tops(d.events.size());
+  for (size_t k = 0; k < parts.size() && k < tracks.samples.size(); ++k) {
+    if (parts[k].planning) continue;
+    const Eigen::AlignedBox3d& box = parts[k].extent;
+    for (size_t i = 0; i < d.events.size(); ++i) {
+      const auto& samples = tracks.samples[k];
+      int f = std::min(d.events[i].frame, static_cast<int>(samples.size()) - 1);
+      while (f >= 0 && !samples[f].valid) --f;
+      if (f < 0) continue;
+      const Pose& P = samples[f].pose;
+      // The face of its box that looks up most, if it looks up (a tray carried level).
+      int axis = 0;
+      for (int a = 1; a < 3; ++a)
+        if (std::abs(P.linear()(2, a)) > std::abs(P.linear()(2, axis))) axis = a;
+      const double sign = P.linear()(2, axis) > 0 ? 1.0 : -1.0;
+      if (sign * P.linear()(2, axis) < std::cos(10.0 * M_PI / 180)) continue;
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      std::vector<Eigen::Vector3d> top;
+      // Counter-clockwise seen from above: the polygon's normal points up.
+      for (const auto& [a, b] : {std::pair{0, 0}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
+        Eigen::Vector3d c;
+        c[axis] = sign > 0 ? box.max()[axis] : box.min()[axis];
+        c[u] = a ? box.max()[u] : box.min()[u];
+        c[v] = b ? box.max()[v] : box.min()[v];
+        top.push_back(P * c);
+      }
+      if (polygon_plane(top).normal.z() < 0) std::reverse(top.begin(), top.end());
+      tops[i].push_back(std::move(top));
+    }
+  }
+  return tops;
 }
 
 }  // namespace
@@ -80,7 +120,8 @@ ExtractionResult extract_demonstration(const std::string& video_path, const Came
   if (o.scene) {
     SettleOptions settle = o.settle;
     settle.snap.viewpoint = r.world_T_camera.translation();
-    r.demonstration = settle_on_supports(*o.scene, std::move(r.demonstration), settle);
+    const EventSupports trays = carrier_tops(r.raw, tracker.parts(), r.demonstration);
+    r.demonstration = settle_on_supports(*o.scene, std::move(r.demonstration), settle, trays);
   }
   r.smoothed = smooth_tracks(r.raw, r.contacts, o.contacts);
   r.frames = frames;

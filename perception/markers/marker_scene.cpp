@@ -32,6 +32,7 @@ std::vector<std::string> MarkerScene::planning_object_ids() const {
 }
 
 Eigen::AlignedBox3d marker_extent(const MarkedObject& object) {
+  if (object.box) return Eigen::AlignedBox3d(-*object.box / 2, *object.box / 2);
   Eigen::AlignedBox3d box;
   for (const auto& m : object.markers) {
     const double h = m.size / 2;
@@ -76,6 +77,17 @@ MarkerScene load_marker_scene(const std::string& path) {
       mk.object_T_marker = pose_from_json(m["object_T_marker"]);
       obj.markers.push_back(mk);
     }
+    if (o.has("box")) {
+      const JsonField box = o["box"];
+      const Eigen::VectorXd size = box["size"].vector();
+      if (size.size() != 3 || !(size.minCoeff() > 0)) box["size"].fail("must be three sizes > 0 (metres)");
+      obj.box = size.head<3>();
+      if (box.has("rgb")) {
+        const Eigen::VectorXd rgb = box["rgb"].vector();
+        if (rgb.size() != 3 || rgb.minCoeff() < 0 || rgb.maxCoeff() > 255) box["rgb"].fail("must be three values 0..255");
+        obj.box_rgb = rgb.head<3>().array().round().cast<int>();
+      }
+    }
     s.objects.push_back(std::move(obj));
   }
   return s;
@@ -87,7 +99,10 @@ void save_marker_scene(const std::string& path, const MarkerScene& s) {
     Json markers = Json::array();
     for (const auto& m : o.markers)
       markers.push_back({{"id", m.id}, {"size", m.size}, {"object_T_marker", pose_to_json(m.object_T_marker)}});
-    objects.push_back({{"id", o.id}, {"planning", o.planning}, {"markers", markers}});
+    Json object{{"id", o.id}, {"planning", o.planning}, {"markers", markers}};
+    if (o.box)
+      object["box"] = {{"size", {o.box->x(), o.box->y(), o.box->z()}}, {"rgb", {o.box_rgb.x(), o.box_rgb.y(), o.box_rgb.z()}}};
+    objects.push_back(object);
   }
   Json j{{"format", kFormat},
                {"version", kVersion},

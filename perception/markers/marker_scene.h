@@ -16,6 +16,10 @@
 // origin at the marker centre, z out of the printed face, x to the right and y up in the
 // printed image. `size` is the side of the black square (metres). A marker id belongs to one
 // object only. "planning": false marks a part that is tracked but not planned for (a tray).
+// An object may be given as a box instead of by a model of the task or cell (a tray or a board
+// the demonstrator moves, which the task has no model of):
+//    "box": {"size": [x, y, z], "rgb": [r, g, b]}   // metres, centred on the part's origin; 0..255
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +39,8 @@ struct MarkedObject {
   std::string id;
   bool planning = true;
   std::vector<ObjectMarker> markers;
+  std::optional<Eigen::Vector3d> box;        // size (m): the part is this box, not a model
+  Eigen::Vector3i box_rgb{128, 128, 128};    // its colour
 };
 
 struct MarkerScene {
@@ -51,8 +57,8 @@ struct MarkerScene {
   std::vector<std::string> planning_object_ids() const;
 };
 
-// The box spanned by a part's markers in its frame (a 10 cm cube at the origin without markers):
-// the part's extent where no model is at hand.
+// The part's box when it is given as one, else the box spanned by its markers in its frame (a
+// 10 cm cube at the origin without markers): the part's extent where no model is at hand.
 Eigen::AlignedBox3d marker_extent(const MarkedObject& object);
 
 // Throws InputError for malformed files, unknown dictionaries, duplicate marker ids.

@@ -67,6 +67,11 @@ Scene cell_scene_with_visuals(const MarkerScene& scene, const std::string& scene
   return build_cell_scene(load_cell(cell_file), options);
 }
 
+// A part the scene gives as a box (a tray): its colour is RGB, a mesh's BGR.
+RenderMesh box_part_mesh(const MarkedObject& o) {
+  return box_mesh(*o.box, cv::Vec3f(o.box_rgb.z(), o.box_rgb.y(), o.box_rgb.x()));
+}
+
 }  // namespace
 
 std::vector<FurnitureMesh> furniture_meshes(const BenchmarkTask& task) {
@@ -118,6 +123,10 @@ std::vector<RenderMesh> marker_scene_part_meshes(const MarkerScene& scene, const
     std::string cell_file;
     const Scene cell_scene = cell_scene_with_visuals(scene, scene_file, data_dir, cache, cell_file);
     for (const auto& o : scene.objects) {
+      if (o.box) {
+        meshes.push_back(box_part_mesh(o));
+        continue;
+      }
       const auto it = std::find_if(cell_scene.objects.begin(), cell_scene.objects.end(), [&](auto& s) { return s.id == o.id; });
       if (it == cell_scene.objects.end())
         throw InputError(scene_file, "objects", "object '" + o.id + "' is not a part of the cell " + cell_file);
@@ -131,6 +140,10 @@ std::vector<RenderMesh> marker_scene_part_meshes(const MarkerScene& scene, const
   options.load_visual_meshes = true;
   options.mesh_cache = &cache;
   for (const auto& o : scene.objects) {
+    if (o.box) {
+      meshes.push_back(box_part_mesh(o));
+      continue;
+    }
     const auto it = std::find_if(task.objects.begin(), task.objects.end(), [&](auto& t) { return t.id == o.id; });
     if (it == task.objects.end())
       throw InputError(scene_file, "objects", "object '" + o.id + "' is not an object of task " + scene.task);

@@ -42,6 +42,17 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kDictionary = "DICT_4X4_100";
+// The tray the waiter's parts ride on: drawn as a flat box of this colour (BGR) and, without
+// markers, given to the tracker as a part by that box (the task's tray model is a stand-in cube).
+const cv::Vec3f kTrayBgr{60, 90, 120};
+constexpr const char* kTrayId = "TRAY";
+
+// The tray's box centre in frame f (the script keeps its top centre).
+Pose tray_centre(const DemoScript& script, int f) {
+  Pose T = *script.tray[f];
+  T.translation() -= T.linear().col(2) * (script.tray_size.z() / 2);
+  return T;
+}
 
 struct Placed {
   RenderMesh mesh;
@@ -217,7 +228,7 @@ SynthOutput render_demonstration(const SynthOptions& o, const std::string& out_d
   const cv::Mat static_color = r.color().clone(), static_depth = r.depth().clone();
 
   const RenderMesh hand = hand_mesh();
-  const RenderMesh tray = box_mesh(script.tray_size, {60, 90, 120});
+  const RenderMesh tray = box_mesh(script.tray_size, kTrayBgr);
   const RenderMesh pole = cylinder_mesh(0.05, 0.8, {70, 60, 55});
   cv::RNG blur_rng(o.seed * 2654435761u + 17);
   Degradation degradation{o.noise_sigma, o.blur_px, blur_rng.uniform(0.0, M_PI)};
@@ -243,11 +254,7 @@ SynthOutput render_demonstration(const SynthOptions& o, const std::string& out_d
       return out;  // the writer removes its partial file
     }
     r.restore(static_color, static_depth);
-    if (script.tray[f]) {
-      Pose T = *script.tray[f];
-      T.translation() -= T.linear().col(2) * (script.tray_size.z() / 2);
-      r.draw(tray, T);
-    }
+    if (script.tray[f]) r.draw(tray, tray_centre(script, f));
     for (size_t k = 0; k < script.object_ids.size(); ++k) {
       const Pose& P = script.poses[f][k];
       r.draw(assets.parts[k], P);
@@ -319,6 +326,8 @@ SynthOutput render_demonstration(const SynthOptions& o, const std::string& out_d
   save_demonstration(out.truth, truth);
   TrackerInit init;
   for (size_t k = 0; k < script.object_ids.size(); ++k) init.parts.push_back({script.object_ids[k], script.poses.front()[k]});
+  for (const auto& m : markers.objects)
+    if (m.id == kTrayId) init.parts.push_back({m.id, tray_centre(script, 0)});
   save_tracker_init(out.init, init);
   out.events = static_cast<int>(truth.events.size());
   if (o.detections) {
@@ -365,7 +374,11 @@ SynthOutput write_synthetic_demonstration(const SynthOptions& o, const std::stri
   markers.camera = "camera.json";
   markers.dictionary = kDictionary;
   for (size_t k = 0; k < script.object_ids.size(); ++k)
-    markers.objects.push_back({script.object_ids[k], true, part_markers[k]});
+    markers.objects.push_back({script.object_ids[k], true, part_markers[k], std::nullopt});
+  // Without markers the tray is followed as a part too, as the task's raw poses follow it: the
+  // parts resting on it then rest on its top, whose height their images alone do not give.
+  if (!o.part_markers && !script.tray.empty() && script.tray.front())
+    markers.objects.push_back({kTrayId, false, {}, script.tray_size, Eigen::Vector3i(kTrayBgr[2], kTrayBgr[1], kTrayBgr[0])});
 
   return render_demonstration(o, out_dir, assets, script, bounds, camera, markers, script.truth(), t0);
 }

@@ -187,6 +187,9 @@ OcclusionMap ModelPoseTracker::occlusion_map(int skip) const {
   cv::Mat before;
   for (size_t p = 0; p < models_.size(); ++p) {
     if (static_cast<int>(p) == skip) continue;
+    // A part not planned for (a tray) lies under what it carries and hides none of it: the
+    // parts' depth, centimetres off at a few metres, would sink them into it.
+    if (!parts_[p].planning) continue;
     r.depth().copyTo(before);
     r.draw(s.silhouettes[p], s.camera_T_part[p]);
     map.labels.setTo(static_cast<int>(p + 1), r.depth() < before);

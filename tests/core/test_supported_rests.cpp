@@ -102,5 +102,34 @@ TEST(SupportedRests, AReleaseTwoMillimetresUpIsSettledPlannedAndValidated) {
   EXPECT_TRUE(report.valid()) << report.validation.message;
 }
 
+// A part set on a tray the demonstrator holds (no furniture under it) is measured from its image
+// alone, its depth centimetres off: settled onto the tray's top given for that event, along its
+// line of sight, it rests where it was put; a tray its line of sight misses holds nothing.
+TEST(SupportedRests, APartOnATrayIsSettledOntoItsTopAlongItsLineOfSight) {
+  test::TempFolder dir("demoplan_supported_rests");
+  const Scene scene = build_cell_scene(table_cell(dir), {.data_dir = DEMOPLAN_DATA_DIR});
+  const double tray = kTop + 0.3;  // held 30 cm above the table
+  const Eigen::Vector3d eye(-1.0, 0.15, 2.0);
+  Demonstration d = one_pick(scene, 0.0);
+  Pose& released = d.events[1].poses[0];
+  released.translation().z() = tray + kHalfHeight + 0.001;
+  const Pose truth = released;
+  const Eigen::Vector3d sight = (truth.translation() - eye).normalized();
+  released.translation() -= 0.05 * sight;  // seen 5 cm nearer
+  auto square = [](double x, double y, double half, double z) {
+    return std::vector<Eigen::Vector3d>{{x - half, y - half, z}, {x + half, y - half, z}, {x + half, y + half, z}, {x - half, y + half, z}};
+  };
+  SettleOptions options;
+  options.snap.viewpoint = eye;
+  const EventSupports under(2, {square(0.45, 0.15, 0.15, tray)});
+  const Demonstration settled = settle_on_supports(scene, d, options, under);
+  EXPECT_LT((settled.events[1].poses[0].translation() - truth.translation()).norm(), 1e-3);
+  EXPECT_LT((settled.events[0].poses[0].translation() - d.events[0].poses[0].translation()).norm(), 1e-3)
+      << "the grasp's rest on the table is the table's";
+  const EventSupports beside(2, {square(1.2, 0.15, 0.15, tray)});
+  EXPECT_TRUE(settle_on_supports(scene, d, options, beside).events[1].poses[0].isApprox(released, 1e-12));
+  EXPECT_TRUE(settle_on_supports(scene, d, options).events[1].poses[0].isApprox(released, 1e-12));
+}
+
 }  // namespace
 }  // namespace demoplan

@@ -70,7 +70,7 @@ TEST(MarkerScene, RoundTripAndErrors) {
   MarkerScene s;
   s.task = "shelf_0";
   s.objects.push_back({"YCBV_02", true, box_face_markers(Eigen::AlignedBox3d(Eigen::Vector3d(-0.04, -0.08, -0.1),
-                                                                              Eigen::Vector3d(0.04, 0.08, 0.1)), 0)});
+                                                                              Eigen::Vector3d(0.04, 0.08, 0.1)), 0), std::nullopt});
   const std::string p = (dir / "scene.json").string();
   save_marker_scene(p, s);
   const MarkerScene r = load_marker_scene(p);
