@@ -80,6 +80,25 @@ TEST(MarkerScene, RoundTripAndErrors) {
   EXPECT_TRUE(r.find_marker(4, o, m));
   EXPECT_EQ(m, 4);
   EXPECT_TRUE(r.objects[0].markers[4].object_T_marker.isApprox(s.objects[0].markers[4].object_T_marker, 1e-9));
+  EXPECT_FALSE(r.objects[0].box);
+  // A part given by its box (a tray): its size and colour kept, its extent the box.
+  s.objects.push_back({"TRAY", false, {}, Eigen::Vector3d(0.4, 0.3, 0.015), Eigen::Vector3i(120, 90, 60)});
+  save_marker_scene(p, s);
+  const MarkerScene t = load_marker_scene(p);
+  ASSERT_EQ(t.objects.size(), 2u);
+  ASSERT_TRUE(t.objects[1].box);
+  EXPECT_TRUE(t.objects[1].box->isApprox(Eigen::Vector3d(0.4, 0.3, 0.015)));
+  EXPECT_EQ(t.objects[1].box_rgb, Eigen::Vector3i(120, 90, 60));
+  EXPECT_FALSE(t.objects[1].planning);
+  EXPECT_TRUE(marker_extent(t.objects[1]).max().isApprox(Eigen::Vector3d(0.2, 0.15, 0.0075)));
+  std::ofstream(dir / "flat.json") << R"({"format":"demoplan-marker-scene","version":1,"dictionary":"DICT_4X4_100",
+    "objects":[{"id":"TRAY","markers":[],"box":{"size":[0.4,0.3,0]}}]})";
+  try {
+    load_marker_scene((dir / "flat.json").string());
+    FAIL() << "a box without thickness accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("objects[0].box.size"), std::string::npos) << e.what();
+  }
   // A marker id used twice is bad input naming the field.
   std::ofstream(dir / "dup.json") << R"({"format":"demoplan-marker-scene","version":1,"dictionary":"DICT_4X4_100",
     "objects":[{"id":"A","markers":[{"id":3,"size":0.05,"object_T_marker":{"t":[0,0,0],"q":[0,0,0,1]}}]},
