@@ -571,8 +571,21 @@ void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {
   mask.setTo(cv::GC_BGD, hidden(roi) | others(roi));
   cv::rectangle(mask, cv::Rect(cv::Point(0, 0), roi.size()), cv::Scalar(cv::GC_BGD), 3);
   cv::Mat background_model, foreground_model;
-  cv::grabCut(image(roi), mask, cv::Rect(), background_model, foreground_model, options_.settle_grabcut_iterations,
-              cv::GC_INIT_WITH_MASK);
+  // A large part (a tray across half the view) is segmented at a smaller scale: GrabCut's cost
+  // grows with the pixels, its colour models do not need them all.
+  constexpr double kGrabCutPixels = 250000;
+  if (roi.area() <= kGrabCutPixels) {
+    cv::grabCut(image(roi), mask, cv::Rect(), background_model, foreground_model, options_.settle_grabcut_iterations,
+                cv::GC_INIT_WITH_MASK);
+  } else {
+    const double scale = std::sqrt(kGrabCutPixels / roi.area());
+    cv::Mat small_image, small_mask;
+    cv::resize(image(roi), small_image, cv::Size(), scale, scale, cv::INTER_AREA);
+    cv::resize(mask, small_mask, small_image.size(), 0, 0, cv::INTER_NEAREST);
+    cv::grabCut(small_image, small_mask, cv::Rect(), background_model, foreground_model,
+                options_.settle_grabcut_iterations, cv::GC_INIT_WITH_MASK);
+    cv::resize(small_mask, mask, mask.size(), 0, 0, cv::INTER_NEAREST);
+  }
   ColorHistograms colors;
   for (int y = 0; y < roi.height; ++y)
     for (int x = 0; x < roi.width; ++x) {
