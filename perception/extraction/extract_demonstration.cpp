@@ -2,18 +2,17 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <stdexcept>
 
 #include "core/demo/settle_demonstration.h"
 #include "core/error.h"
-#include "core/scene/support.h"
 #include "perception/camera/board_extrinsics.h"
 #include "perception/events/demonstration_builder.h"
 #include "perception/events/track_smoothing.h"
 #include "perception/importers/bop_csv.h"
 #include "perception/importers/hand_detections.h"
 #include "perception/tracking/bop_fusion.h"
+#include "perception/tracking/carrier_top.h"
 #include "perception/video/video_reader.h"
 
 namespace demoplan::perception {
@@ -35,31 +34,12 @@ EventSupports carrier_tops(const PoseTracks& tracks, const std::vector<TrackedPa
   EventSupports tops(d.events.size());
   for (size_t k = 0; k < parts.size() && k < tracks.samples.size(); ++k) {
     if (parts[k].planning) continue;
-    const Eigen::AlignedBox3d& box = parts[k].extent;
+    const auto& samples = tracks.samples[k];
     for (size_t i = 0; i < d.events.size(); ++i) {
-      const auto& samples = tracks.samples[k];
       int f = std::min(d.events[i].frame, static_cast<int>(samples.size()) - 1);
       while (f >= 0 && !samples[f].valid) --f;
       if (f < 0) continue;
-      const Pose& P = samples[f].pose;
-      // The face of its box that looks up most, if it looks up (a tray carried level).
-      int axis = 0;
-      for (int a = 1; a < 3; ++a)
-        if (std::abs(P.linear()(2, a)) > std::abs(P.linear()(2, axis))) axis = a;
-      const double sign = P.linear()(2, axis) > 0 ? 1.0 : -1.0;
-      if (sign * P.linear()(2, axis) < std::cos(10.0 * M_PI / 180)) continue;
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-      std::vector<Eigen::Vector3d> top;
-      // Counter-clockwise seen from above: the polygon's normal points up.
-      for (const auto& [a, b] : {std::pair{0, 0}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
-        Eigen::Vector3d c;
-        c[axis] = sign > 0 ? box.max()[axis] : box.min()[axis];
-        c[u] = a ? box.max()[u] : box.min()[u];
-        c[v] = b ? box.max()[v] : box.min()[v];
-        top.push_back(P * c);
-      }
-      if (polygon_plane(top).normal.z() < 0) std::reverse(top.begin(), top.end());
-      tops[i].push_back(std::move(top));
+      if (auto top = carrier_top(parts[k].extent, samples[f].pose)) tops[i].push_back(std::move(*top));
     }
   }
   return tops;
