@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "perception/camera/camera_model.h"
+#include "perception/markers/marker_scene.h"
 #include "perception/synthetic/synthetic_video.h"
 #include "perception/tracking/tracker_init.h"
 #include "ui/document/document.h"
@@ -184,6 +185,24 @@ private slots:
     doc_->setCurrentFrame(0);
     QVERIFY(!starts().shown());
     QVERIFY2(starts().caption().contains(QStringLiteral("init.json")), qPrintable(starts().caption()));
+  }
+
+  // A part the marker scene tracks beyond the project's (a tray, not planned for) has no start the
+  // operator could place: detection does not start, and says which part and where to give it.
+  void aPartOutsideTheProjectAsksForInitJson() {
+    perception::MarkerScene scene = perception::load_marker_scene(synth_.scene);
+    scene.objects.push_back({"TRAY", false, {}, Eigen::Vector3d(0.4, 0.3, 0.015), Eigen::Vector3i(120, 90, 60)});
+    const QString trayed = dir_.filePath(QStringLiteral("scene_with_tray.json"));
+    perception::save_marker_scene(trayed.toStdString(), scene);
+    doc_->setMediaFile(Media::File::Markers, trayed);
+    doc_->detection()->setModelTracker(true);
+    std::optional<ExtractionOutcome> outcome;
+    connect(doc_->detection(), &EventDetection::done, this, [&](const ExtractionOutcome& o) { outcome = o; });
+    QVERIFY(!doc_->detection()->start());
+    QVERIFY(outcome);
+    QVERIFY(!outcome->ok);
+    QVERIFY2(outcome->error.find("part 'TRAY' is not in the project's scene") != std::string::npos, outcome->error.c_str());
+    QVERIFY2(outcome->error.find("init.json") != std::string::npos, outcome->error.c_str());
   }
 
   void onlyOnTheStartFrameWithThePartModels() {

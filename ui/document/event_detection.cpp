@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/demo/settle_demonstration.h"
+#include "core/error.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/tracking/tracker_init.h"
 #include "ui/document/document.h"
@@ -79,6 +80,14 @@ perception::TrackerInit EventDetection::modelTrackerStart(std::string* source) c
     const PoseList poses = doc_->demoPosesAt(0);
     const auto& objects = doc_->scene().objects;
     for (size_t k = 0; k < objects.size() && k < poses.size(); ++k) init.parts.push_back({objects[k].id, poses[k]});
+    // A part the marker scene tracks beyond the project's (a tray, not planned for) has no start
+    // the operator could place here.
+    if (!markers.empty())
+      for (const auto& o : perception::load_marker_scene(markers).objects)
+        if (!init.find(o.id))
+          throw InputError(markers, "objects",
+                           "part '" + o.id + "' is not in the project's scene, so it has no start to place: give every "
+                           "part's pose in frame 0 in " + init_file.string());
   }
   if (source) *source = from;
   return init;
