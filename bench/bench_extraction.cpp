@@ -151,7 +151,9 @@ int main(int argc, char** argv) {
       if (tracker_name == "ols" || tracker_name == "gos") {
         std::vector<RenderMesh> meshes = marker_scene_part_meshes(scene, s.scene, data);
         std::vector<std::pair<std::string, RenderMesh>> parts;
-        for (size_t k = 0; k < scene.objects.size(); ++k) parts.emplace_back(scene.objects[k].id, std::move(meshes[k]));
+        // The baselines follow the planning parts only (not waiter_0's tray), as they were measured.
+        for (size_t k = 0; k < scene.objects.size(); ++k)
+          if (scene.objects[k].planning) parts.emplace_back(scene.objects[k].id, std::move(meshes[k]));
         tracker = std::make_unique<bench::RapidPoseTracker>(
             tracker_name == "ols" ? bench::RapidPoseTracker::Kind::Ols : bench::RapidPoseTracker::Kind::Gos, parts,
             load_tracker_init(s.init));
