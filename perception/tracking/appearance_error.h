@@ -12,10 +12,11 @@
 namespace demoplan::perception {
 
 // The mean absolute difference (0-255, per channel) between `image` and `mesh` drawn at
-// `camera_T_part` (by the renderer, its light fixed in the world: `world_T_camera`), over the pixels where it shows (`occlusion`: what hides it; `part` its index
-// there), both blurred by 5 px first (a pose a pixel off does not make the print's edges
-// differ), the drawing first scaled per channel to the image's mean there (the video's light).
-// Negative when fewer than `min_pixels` show.
+// `camera_T_part` (by the renderer, its light fixed in the world: `world_T_camera`), over the
+// pixels where it shows (`occlusion`: what hides it; `part` its index there), both blurred by
+// 5 px first (a pose a pixel off does not make the print's edges differ), the drawing first
+// scaled per channel to the image's mean there (the video's light). Negative when fewer than
+// `min_pixels` show.
 double appearance_error(const cv::Mat& image, const PinholeIntrinsics& camera, const Pose& world_T_camera,
                         const RenderMesh& mesh, const Pose& camera_T_part, const OcclusionMap& occlusion, int part,
                         int min_pixels = 50);
