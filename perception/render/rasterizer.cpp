@@ -31,7 +31,7 @@ void Rasterizer::clear(const cv::Vec3b& top, const cv::Vec3b& bottom) {
 }
 
 void Rasterizer::restore(const cv::Mat& color, const cv::Mat& depth) {
-  color.copyTo(color_);
+  if (!color.empty()) color.copyTo(color_);
   depth.copyTo(depth_);
 }
 
@@ -45,6 +45,31 @@ float Rasterizer::shade_of(const Eigen::Vector3d& n) const {
   return static_cast<float>(0.45 + 0.55 * std::max(0.0, n.dot(light_camera_)));
 }
 
+int Rasterizer::clip_near(const ClipVertex* in, ClipVertex* out) {
+  int behind = 0;
+  for (int k = 0; k < 3; ++k) behind += in[k].p.z() < kNear;
+  if (behind == 3) return 0;
+  if (behind == 0) {
+    std::copy(in, in + 3, out);
+    return 3;
+  }
+  // Sutherland-Hodgman against the near plane.
+  int m = 0;
+  for (int k = 0; k < 3; ++k) {
+    const ClipVertex& a = in[k];
+    const ClipVertex& b = in[(k + 1) % 3];
+    const bool ain = a.p.z() >= kNear, bin = b.p.z() >= kNear;
+    if (ain) out[m++] = a;
+    if (ain != bin) {
+      const double s = (kNear - a.p.z()) / (b.p.z() - a.p.z());
+      out[m].p = a.p + s * (b.p - a.p);
+      out[m].uv = a.uv + static_cast<float>(s) * (b.uv - a.uv);
+      ++m;
+    }
+  }
+  return m;
+}
+
 void Rasterizer::draw(const RenderMesh& mesh, const Pose& world_T_mesh) {
   const Pose T = camera_T_world_ * world_T_mesh;
   const Eigen::Matrix3d R = T.linear();
@@ -54,38 +79,19 @@ void Rasterizer::draw(const RenderMesh& mesh, const Pose& world_T_mesh) {
   const bool textured = !mesh.texture.empty() && !mesh.uvs.empty();
   for (const auto& tri : mesh.triangles) {
     ClipVertex in[3];
-    int behind = 0;
     for (int k = 0; k < 3; ++k) {
       in[k].p = cam[tri[k]];
       in[k].uv = textured ? mesh.uvs[tri[k]] : Eigen::Vector2f::Zero();
-      behind += in[k].p.z() < kNear;
     }
-    if (behind == 3) continue;
+    if (in[0].p.z() < kNear && in[1].p.z() < kNear && in[2].p.z() < kNear) continue;
     Eigen::Vector3d n = (in[1].p - in[0].p).cross(in[2].p - in[0].p);
     const double len = n.norm();
     if (len < 1e-15) continue;
     n /= len;
     if (n.dot(in[0].p) > 0) n = -n;  // two-sided: the side facing the camera
     const float shade = shade_of(n);
-    if (behind == 0) {
-      draw_triangle(in, mesh, shade);
-      continue;
-    }
-    // Clip against the near plane (Sutherland-Hodgman), then fan.
     ClipVertex out[4];
-    int m = 0;
-    for (int k = 0; k < 3; ++k) {
-      const ClipVertex& a = in[k];
-      const ClipVertex& b = in[(k + 1) % 3];
-      const bool ain = a.p.z() >= kNear, bin = b.p.z() >= kNear;
-      if (ain) out[m++] = a;
-      if (ain != bin) {
-        const double s = (kNear - a.p.z()) / (b.p.z() - a.p.z());
-        out[m].p = a.p + s * (b.p - a.p);
-        out[m].uv = a.uv + static_cast<float>(s) * (b.uv - a.uv);
-        ++m;
-      }
-    }
+    const int m = clip_near(in, out);
     for (int k = 1; k + 1 < m; ++k) {
       const ClipVertex fan[3] = {out[0], out[k], out[k + 1]};
       draw_triangle(fan, mesh, shade);
@@ -93,57 +99,100 @@ void Rasterizer::draw(const RenderMesh& mesh, const Pose& world_T_mesh) {
   }
 }
 
-void Rasterizer::draw_triangle(const ClipVertex* v, const RenderMesh& mesh, float shade) {
-  double sx[3], sy[3], iz[3];
-  float uz[3], vz[3];
-  for (int k = 0; k < 3; ++k) {
-    iz[k] = 1.0 / v[k].p.z();
-    sx[k] = fx_ * v[k].p.x() * iz[k] + cx_;
-    sy[k] = fy_ * v[k].p.y() * iz[k] + cy_;
-    uz[k] = static_cast<float>(v[k].uv.x() * iz[k]);
-    vz[k] = static_cast<float>(v[k].uv.y() * iz[k]);
+void Rasterizer::draw_depth(const RenderMesh& mesh, const Pose& world_T_mesh, cv::Mat* labels, uchar label) {
+  const Pose T = camera_T_world_ * world_T_mesh;
+  const Eigen::Matrix3d R = T.linear();
+  const Eigen::Vector3d t = T.translation();
+  std::vector<Eigen::Vector3d> cam(mesh.vertices.size());
+  std::vector<ScreenVertex> screen(mesh.vertices.size());
+  for (size_t i = 0; i < cam.size(); ++i) {
+    cam[i] = R * mesh.vertices[i].cast<double>() + t;
+    if (cam[i].z() >= kNear) screen[i] = to_screen(cam[i], fx_, fy_, cx_, cy_);
   }
-  const double area = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sy[1] - sy[0]) * (sx[2] - sx[0]);
+  auto paint = [&](int x, int y, double, double, double, double) {
+    if (labels) labels->ptr<uchar>(y)[x] = label;
+  };
+  for (const auto& tri : mesh.triangles) {
+    const Eigen::Vector3d &a = cam[tri[0]], &b = cam[tri[1]], &c = cam[tri[2]];
+    const int behind = (a.z() < kNear) + (b.z() < kNear) + (c.z() < kNear);
+    if (behind == 3 || (b - a).cross(c - a).norm() < 1e-15) continue;  // as draw skips them
+    if (behind == 0) {
+      const ScreenVertex v[3] = {screen[tri[0]], screen[tri[1]], screen[tri[2]]};
+      fill(v, paint);
+      continue;
+    }
+    const ClipVertex in[3] = {{a, Eigen::Vector2f::Zero()}, {b, Eigen::Vector2f::Zero()}, {c, Eigen::Vector2f::Zero()}};
+    ClipVertex out[4];
+    const int m = clip_near(in, out);
+    for (int k = 1; k + 1 < m; ++k) {
+      const ScreenVertex v[3] = {to_screen(out[0].p, fx_, fy_, cx_, cy_), to_screen(out[k].p, fx_, fy_, cx_, cy_),
+                                 to_screen(out[k + 1].p, fx_, fy_, cx_, cy_)};
+      fill(v, paint);
+    }
+  }
+}
+
+Rasterizer::ScreenVertex Rasterizer::to_screen(const Eigen::Vector3d& p, double fx, double fy, double cx, double cy) {
+  const double iz = 1.0 / p.z();
+  return {fx * p.x() * iz + cx, fy * p.y() * iz + cy, iz};
+}
+
+template <class Paint>
+void Rasterizer::fill(const ScreenVertex* s, Paint&& paint) {
+  const double area = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[1].y - s[0].y) * (s[2].x - s[0].x);
   if (std::abs(area) < 1e-12) return;
-  const int x0 = std::max(0, static_cast<int>(std::ceil(std::min({sx[0], sx[1], sx[2]}))));
-  const int x1 = std::min(size_.width - 1, static_cast<int>(std::floor(std::max({sx[0], sx[1], sx[2]}))));
-  const int y0 = std::max(0, static_cast<int>(std::ceil(std::min({sy[0], sy[1], sy[2]}))));
-  const int y1 = std::min(size_.height - 1, static_cast<int>(std::floor(std::max({sy[0], sy[1], sy[2]}))));
+  const int x0 = std::max(0, static_cast<int>(std::ceil(std::min({s[0].x, s[1].x, s[2].x}))));
+  const int x1 = std::min(size_.width - 1, static_cast<int>(std::floor(std::max({s[0].x, s[1].x, s[2].x}))));
+  const int y0 = std::max(0, static_cast<int>(std::ceil(std::min({s[0].y, s[1].y, s[2].y}))));
+  const int y1 = std::min(size_.height - 1, static_cast<int>(std::floor(std::max({s[0].y, s[1].y, s[2].y}))));
   if (x0 > x1 || y0 > y1) return;
   const double inv = 1.0 / area;
   // Barycentric weights as affine functions of the pixel position.
-  const double a0x = (sy[1] - sy[2]) * inv, a0y = (sx[2] - sx[1]) * inv;
-  const double a1x = (sy[2] - sy[0]) * inv, a1y = (sx[0] - sx[2]) * inv;
-  const double c0 = ((sx[1] - x0) * (sy[2] - y0) - (sy[1] - y0) * (sx[2] - x0)) * inv;
-  const double c1 = ((sx[2] - x0) * (sy[0] - y0) - (sy[2] - y0) * (sx[0] - x0)) * inv;
-  const bool textured = !mesh.texture.empty() && !mesh.uvs.empty();
-  const int tw = mesh.texture.cols, th = mesh.texture.rows;
-  const float cb = mesh.color[0] * shade, cg = mesh.color[1] * shade, cr = mesh.color[2] * shade;
+  const double a0x = (s[1].y - s[2].y) * inv, a0y = (s[2].x - s[1].x) * inv;
+  const double a1x = (s[2].y - s[0].y) * inv, a1y = (s[0].x - s[2].x) * inv;
+  const double c0 = ((s[1].x - x0) * (s[2].y - y0) - (s[1].y - y0) * (s[2].x - x0)) * inv;
+  const double c1 = ((s[2].x - x0) * (s[0].y - y0) - (s[2].y - y0) * (s[0].x - x0)) * inv;
   constexpr double eps = -1e-9;
   for (int y = y0; y <= y1; ++y) {
     double w0 = c0 + a0y * (y - y0), w1 = c1 + a1y * (y - y0);
-    auto* crow = color_.ptr<cv::Vec3b>(y);
     auto* drow = depth_.ptr<float>(y);
     for (int x = x0; x <= x1; ++x, w0 += a0x, w1 += a1x) {
       const double w2 = 1.0 - w0 - w1;
       if (w0 < eps || w1 < eps || w2 < eps) continue;
-      const double izp = w0 * iz[0] + w1 * iz[1] + w2 * iz[2];
+      const double izp = w0 * s[0].iz + w1 * s[1].iz + w2 * s[2].iz;
       const float z = static_cast<float>(1.0 / izp);
       if (z >= drow[x]) continue;
       drow[x] = z;
-      if (!textured) {
-        crow[x] = cv::Vec3b(cv::saturate_cast<uchar>(cb), cv::saturate_cast<uchar>(cg), cv::saturate_cast<uchar>(cr));
-        continue;
-      }
-      const double u = (w0 * uz[0] + w1 * uz[1] + w2 * uz[2]) / izp;
-      const double vv = (w0 * vz[0] + w1 * vz[1] + w2 * vz[2]) / izp;
-      const int tx = std::clamp(static_cast<int>(u * (tw - 1) + 0.5), 0, tw - 1);
-      const int ty = std::clamp(static_cast<int>((1.0 - vv) * (th - 1) + 0.5), 0, th - 1);
-      const cv::Vec3b t = mesh.texture.at<cv::Vec3b>(ty, tx);
-      crow[x] = cv::Vec3b(cv::saturate_cast<uchar>(t[0] * shade), cv::saturate_cast<uchar>(t[1] * shade),
-                          cv::saturate_cast<uchar>(t[2] * shade));
+      paint(x, y, w0, w1, w2, izp);
     }
   }
+}
+
+void Rasterizer::draw_triangle(const ClipVertex* v, const RenderMesh& mesh, float shade) {
+  ScreenVertex s[3];
+  float uz[3], vz[3];
+  for (int k = 0; k < 3; ++k) {
+    s[k] = to_screen(v[k].p, fx_, fy_, cx_, cy_);
+    uz[k] = static_cast<float>(v[k].uv.x() * s[k].iz);
+    vz[k] = static_cast<float>(v[k].uv.y() * s[k].iz);
+  }
+  const bool textured = !mesh.texture.empty() && !mesh.uvs.empty();
+  const int tw = mesh.texture.cols, th = mesh.texture.rows;
+  const float cb = mesh.color[0] * shade, cg = mesh.color[1] * shade, cr = mesh.color[2] * shade;
+  fill(s, [&](int x, int y, double w0, double w1, double w2, double izp) {
+    cv::Vec3b& pixel = color_.ptr<cv::Vec3b>(y)[x];
+    if (!textured) {
+      pixel = cv::Vec3b(cv::saturate_cast<uchar>(cb), cv::saturate_cast<uchar>(cg), cv::saturate_cast<uchar>(cr));
+      return;
+    }
+    const double u = (w0 * uz[0] + w1 * uz[1] + w2 * uz[2]) / izp;
+    const double vv = (w0 * vz[0] + w1 * vz[1] + w2 * vz[2]) / izp;
+    const int tx = std::clamp(static_cast<int>(u * (tw - 1) + 0.5), 0, tw - 1);
+    const int ty = std::clamp(static_cast<int>((1.0 - vv) * (th - 1) + 0.5), 0, th - 1);
+    const cv::Vec3b t = mesh.texture.at<cv::Vec3b>(ty, tx);
+    pixel = cv::Vec3b(cv::saturate_cast<uchar>(t[0] * shade), cv::saturate_cast<uchar>(t[1] * shade),
+                      cv::saturate_cast<uchar>(t[2] * shade));
+  });
 }
 
 void Rasterizer::draw_marker(const cv::Mat& image, double side, const Pose& world_T_marker) {

@@ -18,10 +18,15 @@ public:
 
   // Background: a vertical gradient; depth: infinitely far.
   void clear(const cv::Vec3b& top, const cv::Vec3b& bottom);
-  // Starts from a previously rendered image and depth (e.g. the static part of the scene).
+  // Starts from a previously rendered image and depth (e.g. the static part of the scene); an
+  // empty `color` leaves the image as it is (for depth-only drawing).
   void restore(const cv::Mat& color, const cv::Mat& depth);
 
   void draw(const RenderMesh& mesh, const Pose& world_T_mesh);
+  // The same depth as draw, without shading or colour (an occlusion map asks for it several
+  // times a frame): each vertex is projected once, not once per triangle. Where `labels`
+  // (CV_8U, the image's size) is given, the pixels the mesh comes nearest in are set to `label`.
+  void draw_depth(const RenderMesh& mesh, const Pose& world_T_mesh, cv::Mat* labels = nullptr, uchar label = 0);
   // A square marker image (8-bit grey, with its white margin) drawn as a square of side
   // `side` metres centred on the marker frame's origin in its x-y plane, image top towards +y.
   // Seen from behind, it is not drawn. Edges are anti-aliased (4x4 samples per pixel).
@@ -40,7 +45,17 @@ private:
     Eigen::Vector3d p;  // camera frame
     Eigen::Vector2f uv;
   };
+  struct ScreenVertex {
+    double x, y, iz;  // pixel position, 1 / depth
+  };
+  static ScreenVertex to_screen(const Eigen::Vector3d& p, double fx, double fy, double cx, double cy);
+  // Calls paint(x, y, w0, w1, w2, z) at each pixel centre inside the triangle where it is nearer
+  // than the depth, after writing the depth there.
+  template <class Paint>
+  void fill(const ScreenVertex* s, Paint&& paint);
   void draw_triangle(const ClipVertex* v, const RenderMesh& mesh, float shade);
+  // The triangle's corners in front of the near plane: 3, or 4 clipped by it (a fan); 0 none.
+  static int clip_near(const ClipVertex* in, ClipVertex* out);
   float shade_of(const Eigen::Vector3d& normal_camera) const;
 
   cv::Size size_;

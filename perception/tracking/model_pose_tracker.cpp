@@ -48,6 +48,7 @@ struct ModelPoseTracker::State {
   std::vector<bool> seen_last;                        // seen in the last frame
   std::vector<RenderMesh> silhouettes;  // untextured meshes for the occlusion map
   cv::Mat furniture_depth;              // the furniture at the occlusion map's scale; empty: none
+  cv::Mat furniture_labels;             // OcclusionMap::kFurniture where it shows, the same scale
   cv::Mat last_gray;                    // the last frame, for the surface points' flow
   LightReference light;                 // the start frame's light
   std::vector<SupportLevel> supports;   // the furniture's upward faces, where a lost part may rest
@@ -127,8 +128,10 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   if (!furniture_.empty()) {
     Rasterizer r = occlusion_rasterizer();
     for (const auto& f : furniture_)
-      r.draw(f.mesh.geometry(), s.world_T_camera.inverse() * f.world_T_mesh);
+      r.draw_depth(f.mesh.geometry(), s.world_T_camera.inverse() * f.world_T_mesh);
     s.furniture_depth = r.depth().clone();
+    s.furniture_labels = cv::Mat(s.furniture_depth.size(), CV_8U, cv::Scalar(0));
+    s.furniture_labels.setTo(OcclusionMap::kFurniture, s.furniture_depth < 1e9f);
   }
   // A start that puts a part behind the camera or its centre beside the picture is a wrong
   // placement, not a part to look for.
@@ -178,21 +181,17 @@ OcclusionMap ModelPoseTracker::occlusion_map(int skip) const {
   const bool furniture = !s.furniture_depth.empty();
   Rasterizer r = occlusion_rasterizer();
   if (furniture) {
-    r.restore(cv::Mat::zeros(s.furniture_depth.size(), CV_8UC3), s.furniture_depth);
-    map.labels = cv::Mat(s.furniture_depth.size(), CV_8U, cv::Scalar(0));
-    map.labels.setTo(OcclusionMap::kFurniture, s.furniture_depth < 1e9f);
+    r.restore(cv::Mat(), s.furniture_depth);
+    map.labels = s.furniture_labels.clone();
   } else {
     map.labels = cv::Mat::zeros(r.depth().size(), CV_8U);
   }
-  cv::Mat before;
   for (size_t p = 0; p < models_.size(); ++p) {
     if (static_cast<int>(p) == skip) continue;
     // A part not planned for (a tray) lies under what it carries and hides none of it: the
     // parts' depth, centimetres off at a few metres, would sink them into it.
     if (!parts_[p].planning) continue;
-    r.depth().copyTo(before);
-    r.draw(s.silhouettes[p], s.camera_T_part[p]);
-    map.labels.setTo(static_cast<int>(p + 1), r.depth() < before);
+    r.draw_depth(s.silhouettes[p], s.camera_T_part[p], &map.labels, static_cast<uchar>(p + 1));
   }
   map.depth = r.depth().clone();
   return map;
@@ -551,13 +550,13 @@ void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {
   // part from what lies around it by colour and coherence.
   Rasterizer r(s.image_size, s.intrinsics.fx, s.intrinsics.fy, s.intrinsics.cx, s.intrinsics.cy, Pose::Identity());
   r.clear({0, 0, 0}, {0, 0, 0});
-  r.draw(s.silhouettes[k], s.camera_T_part[k]);
+  r.draw_depth(s.silhouettes[k], s.camera_T_part[k]);
   const cv::Mat alone = r.depth().clone();
   // What else is in front: the other parts and the furniture. A part mostly hidden at its start
   // keeps it (too little of it shows to move it by); the others' pixels are surely not it.
   for (size_t j = 0; j < models_.size(); ++j)
-    if (j != k) r.draw(s.silhouettes[j], s.camera_T_part[j]);
-  for (const auto& f : furniture_) r.draw(f.mesh.geometry(), s.world_T_camera.inverse() * f.world_T_mesh);
+    if (j != k) r.draw_depth(s.silhouettes[j], s.camera_T_part[j]);
+  for (const auto& f : furniture_) r.draw_depth(f.mesh.geometry(), s.world_T_camera.inverse() * f.world_T_mesh);
   const cv::Mat silhouette = alone < 1e9f, hidden = r.depth() < alone, others = (r.depth() < 1e9f) & ~silhouette;
   const int area = cv::countNonZero(silhouette);
   if (area == 0 || cv::countNonZero(silhouette & ~hidden) < options_.settle_visible_fraction * area) return;
