@@ -69,7 +69,7 @@ Pass correspondence_pass(const cv::Mat& image, const PinholeIntrinsics& K, const
   Pass pass;
   const int N = o.line_samples, W = std::min(o.window, N - 1), M = N - W;
   std::vector<float> pf(2 * N);
-  std::vector<double> likelihood(2 * M + 1);
+  std::vector<double> log_p(2 * M + 1);
   // The smoothed step at each offset of a sample from a candidate edge (the same for every line).
   std::vector<double> step(2 * W);
   for (int d = -W; d < W; ++d) step[d + W] = 0.5 - o.step_amplitude * std::tanh((d + 0.5) / (2.0 * o.step_slope));
@@ -91,31 +91,29 @@ Pass correspondence_pass(const cv::Mat& image, const PinholeIntrinsics& K, const
     pass.hidden += hidden;
     if (!ok) continue;
     // Each candidate edge position d_k = k * scale, scored on the 2W samples around it: part
-    // colours before the edge, surroundings after it, through a smoothed step. A product, not
-    // a sum of logarithms (a logarithm per sample took a tenth of the extraction): its factors
-    // are at least the probabilities' floor, 0.001, so 2W of them stay far from underflow.
-    double best = 0.0;
+    // colours before the edge, surroundings after it, through a smoothed step.
+    double best = -1e300;
     for (int k = -M; k <= M; ++k) {
-      double p = 1.0;
+      double s = 0.0;
       for (int i = k - W; i < k + W; ++i) {
         const double x = (i + 0.5) * scale;
         if (x < -inner_px || x > outer_px + scale) continue;  // beyond the silhouette's own extent
         const double hf = step[i - k + W];
         const double f = pf[i + N];
-        p *= hf * f + (1.0 - hf) * (1.0 - f);
+        s += std::log(hf * f + (1.0 - hf) * (1.0 - f));
       }
-      likelihood[k + M] = p;
-      best = std::max(best, p);
+      log_p[k + M] = s;
+      best = std::max(best, s);
     }
     double sum = 0.0, mean = 0.0;
     for (int k = -M; k <= M; ++k) {
-      likelihood[k + M] /= best;
-      sum += likelihood[k + M];
-      mean += likelihood[k + M] * k * scale;
+      const double w = std::exp(log_p[k + M] - best);
+      sum += w;
+      mean += w * k * scale;
     }
     mean /= sum;
     double variance = 0.0;
-    for (int k = -M; k <= M; ++k) variance += likelihood[k + M] / sum * std::pow(k * scale - mean, 2);
+    for (int k = -M; k <= M; ++k) variance += std::exp(log_p[k + M] - best) / sum * std::pow(k * scale - mean, 2);
     variance = std::max(variance, 0.25 * scale * scale);
     // A flat distribution: the line shows no edge (all part, all surroundings, or an occluder).
     if (std::sqrt(variance) > 0.5 * M * scale) continue;
