@@ -21,12 +21,15 @@ public:
   bool initialised() const { return initialised_; }
   // P(part | colour), in [0.001, 0.999]; 0.5 before the first update.
   float foreground_probability(const cv::Vec3b& bgr) const { return probability_[bin(bgr)]; }
+  // The same by the colour's bin (what is computed from the probability may be kept per bin).
+  float bin_probability(int bin) const { return probability_[bin]; }
 
-private:
+  static constexpr int kBins = 1 << (3 * kBits);
   static int bin(const cv::Vec3b& c) {
     return (c[0] >> (8 - kBits)) << (2 * kBits) | (c[1] >> (8 - kBits)) << kBits | (c[2] >> (8 - kBits));
   }
-  static constexpr int kBins = 1 << (3 * kBits);
+
+private:
   std::vector<float> fg_ = std::vector<float>(kBins, 0.f), bg_ = std::vector<float>(kBins, 0.f);
   std::vector<float> fg_new_ = std::vector<float>(kBins, 0.f), bg_new_ = std::vector<float>(kBins, 0.f);
   std::vector<float> probability_ = std::vector<float>(kBins, 0.5f);
