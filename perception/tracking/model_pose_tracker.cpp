@@ -193,7 +193,7 @@ OcclusionMap ModelPoseTracker::occlusion_map(int skip) const {
     if (!parts_[p].planning) continue;
     r.draw_depth(s.silhouettes[p], s.camera_T_part[p], &map.labels, static_cast<uchar>(p + 1));
   }
-  map.depth = r.depth().clone();
+  map.depth = r.depth();  // the rasterizer's own, drawn into no more
   return map;
 }
 
