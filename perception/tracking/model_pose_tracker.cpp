@@ -55,6 +55,7 @@ struct ModelPoseTracker::State {
   std::vector<Eigen::Matrix3d> rest_rotation;  // each part's world orientation at its last rest
   std::vector<std::optional<Pose>> rest_find;  // found at rest in the last frame (rest_search), to confirm
   std::vector<int> unseen;                     // frames each part has not been seen in, in a row
+  std::vector<int> moved_for;                  // frames each part was seen moving in a row, last it was seen
   std::vector<int> measured_at;                // the last frame each part's pose was measured in (-1: none)
   std::vector<RestHold> holds;                 // each part's, while it is held at its rest (rest_hold.h)
   std::vector<std::optional<Pose>> rest_world;  // each part's pose (world) when last measured at rest
@@ -118,6 +119,7 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   for (const auto& m : models_) s.silhouettes.push_back(m.mesh.geometry());
   s.rest_find.assign(models_.size(), std::nullopt);
   s.unseen.assign(models_.size(), 0);
+  s.moved_for.assign(models_.size(), 0);
   s.measured_at.assign(models_.size(), -1);
   s.holds.assign(models_.size(), RestHold());
   s.rest_world.assign(models_.size(), std::nullopt);
@@ -254,6 +256,13 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     moving[k] = s.seen_last[k] && !resting[k];
   }
   if (options_.ride_prediction) watch_rides(frame, resting);
+  // Lost a few frames ago (lost_mover_frames) in a carry (seen moving in three frames in a row,
+  // not one estimate's jump): still passing in front of what it overlapped, as a moving part.
+  std::vector<bool> lost_moving(models_.size());
+  for (size_t k = 0; k < models_.size(); ++k) {
+    if (s.seen_last[k]) s.moved_for[k] = moving[k] ? s.moved_for[k] + 1 : 0;
+    lost_moving[k] = !s.seen_last[k] && !resting[k] && s.unseen[k] <= options_.lost_mover_frames && s.moved_for[k] >= 3;
+  }
   std::vector<PoseObservation> seen;
   std::vector<bool> learn(models_.size(), false), learn_part(models_.size(), false);
   // Nearest first: a part a hand takes in this frame counts as moving for the parts behind it
@@ -331,7 +340,9 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     if (riding) resting[k] = false;
     // A resting part that a moving one passes in front of stays where it is, unmeasured: what
     // is left of its silhouette is too little to tell a move from the occluder's pull.
-    if (resting[k] && passed_in_front(k, moving)) {
+    std::vector<bool> passing = moving;  // (moving changes as the parts are gone through)
+    for (size_t j = 0; j < passing.size(); ++j) passing[j] = passing[j] || lost_moving[j];
+    if (resting[k] && passed_in_front(k, passing)) {
       if (may_hold) hold_frame();
       continue;
     }
@@ -839,9 +850,12 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     if ((beyond || other_faces) &&
         (r.hidden_lines > 0.1 * r.lines || r.used_lines < 0.9 * r.lines || r.contrast < options_.search_contrast * s.reference_contrast[k]))
       continue;
-    // Still standing on the support it was put on: not tilted off it, not lifted or sunk.
+    // Still standing on the support it was put on: not tilted off it (off its last rest's
+    // orientation, or off that stood level: rest_tilt_from_level), not lifted or sunk.
     const Eigen::Matrix3d world_R = s.world_T_camera.linear() * r.camera_T_part.linear();
-    const double tilt = std::acos(std::clamp(part_up.dot(world_R.transpose().col(2)), -1.0, 1.0));
+    auto tilt_from = [&](const Eigen::Vector3d& up) { return std::acos(std::clamp(up.dot(world_R.transpose().col(2)), -1.0, 1.0)); };
+    double tilt = tilt_from(part_up);
+    if (options_.rest_tilt_from_level) tilt = std::min(tilt, tilt_from(standing_level(orientations[t.face]).transpose().col(2)));
     const double bottom = (s.world_T_camera * r.camera_T_part * model.centre()).z() -
                           centre_height(models_[k].mesh, model.centre(), world_R);
     const double support = (s.world_T_camera * candidate * model.centre()).z() - resting[t.face].lift;

@@ -107,6 +107,9 @@ struct ModelTrackerOptions {
                                         // where it was put down may lie on another background
   double rest_height_tolerance = 0.01;  // m above or into the support
   double rest_tilt_deg = 10.0;          // of its up axis from the last rest's
+  // or from the last rest's stood level (standing_level): a rest tracked some degrees off level
+  // (on a carried tray) does not refuse the part found standing level.
+  bool rest_tilt_from_level = true;
   double rest_confirm_mm = 10.0;        // between the two frames' finds
   // A part found at rest after a gap is followed back into the gap through the last frames
   // (kept while a part is not seen), as long as it is seen there: the end of the carry it was
@@ -127,6 +130,9 @@ struct ModelTrackerOptions {
   double rest_hold_px = 2.0;      // a resting part's smaller moves (and turns) are not taken
   double rest_hold_deg = 2.0;
   double rest_hidden_fraction = 0.4;  // of its lines hidden: a resting part is not measured
+  // A part lost while it moved (carried behind the hand) still passes in front of the resting
+  // parts its last pose overlapped, for this many frames: the hand may be setting it down there.
+  int lost_mover_frames = 10;
   // A resting part not measured while another part moves (the one hand busy with that one) is
   // held at its rest, not looked for elsewhere, from a frame it was measured at rest in; those
   // frames are reported at the rest, with this confidence (an inference: the event detector's

@@ -88,6 +88,14 @@ std::vector<Eigen::Matrix3d> laid_on_sides(const Eigen::Matrix3d& last_rest) {
   return out;
 }
 
+Eigen::Matrix3d standing_level(const Eigen::Matrix3d& world_R) {
+  const Eigen::Vector3d down = world_R.transpose() * -Eigen::Vector3d::UnitZ();  // part frame
+  int axis = 0;
+  down.cwiseAbs().maxCoeff(&axis);
+  const Eigen::Vector3d nearest = std::copysign(1.0, down[axis]) * Eigen::Vector3d::Unit(axis);
+  return Eigen::Quaterniond::FromTwoVectors(world_R * nearest, -Eigen::Vector3d::UnitZ()).toRotationMatrix() * world_R;
+}
+
 std::vector<RestingCandidate> resting_candidates(const std::vector<SupportLevel>& levels, const RestingPart& part,
                                                  const Eigen::Matrix3d& world_R_rest, const std::vector<double>& turns,
                                                  const Pose& world_T_camera, const PinholeIntrinsics& K,

@@ -68,6 +68,11 @@ struct RestingCandidate {
 // upside down).
 std::vector<Eigen::Matrix3d> laid_on_sides(const Eigen::Matrix3d& last_rest);
 
+// The orientation nearest `world_R` that stands on a flat support: the part's axis nearest the
+// world's down turned onto it by the smallest rotation (a tracked rest is a few degrees off
+// level; the part stood level).
+Eigen::Matrix3d standing_level(const Eigen::Matrix3d& world_R);
+
 // The resting poses for each of `pixels` (image coordinates), level and turn (resting_pose) that
 // the level holds and whose core (the part's box shrunk to half about its centre) is in no
 // furniture box: a part cannot rest inside a wall.

@@ -50,3 +50,19 @@ TEST(LaidOnSides, ABoxOnItsSideIsTriedStandingAndOnTheOtherSides) {
   EXPECT_TRUE(standing);
   EXPECT_TRUE(upside_down);
 }
+
+TEST(StandingLevel, TheAxisNearestDownTurnedOntoItByTheSmallestRotation) {
+  // Standing, yawed 40 degrees, its rest tracked 13 degrees off level.
+  const Eigen::Matrix3d level = Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Matrix3d tilted = Eigen::AngleAxisd(13 * M_PI / 180, Eigen::Vector3d(1, 2, 0).normalized()) * level;
+  const Eigen::Matrix3d stood = standing_level(tilted);
+  EXPECT_TRUE(down_axis(stood).isApprox(-Eigen::Vector3d::UnitZ(), 1e-12));
+  EXPECT_NEAR(Eigen::AngleAxisd(stood.transpose() * tilted).angle(), 13 * M_PI / 180, 1e-9);
+  EXPECT_NEAR(Eigen::AngleAxisd(stood.transpose() * level).angle(), 0.0, 1e-9) << "tilted about a horizontal axis: its yaw kept";
+  // Laid on its +y side, 5 degrees off: +y straight down.
+  const Eigen::Matrix3d on_side = Eigen::AngleAxisd(0.09, Eigen::Vector3d::UnitY()) *
+                                  Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  EXPECT_TRUE(down_axis(standing_level(on_side)).isApprox(Eigen::Vector3d::UnitY(), 1e-12));
+  // Already level: unchanged.
+  EXPECT_TRUE(standing_level(level).isApprox(level, 1e-12));
+}
