@@ -49,12 +49,13 @@ private:
     double x, y, iz;  // pixel position, 1 / depth
   };
   static ScreenVertex to_screen(const Eigen::Vector3d& p, double fx, double fy, double cx, double cy);
-  // Calls paint(x, y, w0, w1, w2, z) at each pixel centre inside the triangle where it is nearer
-  // than the depth, after writing the depth there.
+  // Calls paint(x, y, w0, w1, w2, 1 / depth) at each pixel centre inside the triangle where it
+  // is nearer than the depth, after writing the depth there (w: barycentric weights).
   template <class Paint>
   void fill(const ScreenVertex* s, Paint&& paint);
   void draw_triangle(const ClipVertex* v, const RenderMesh& mesh, float shade);
-  // The triangle's corners in front of the near plane: 3, or 4 clipped by it (a fan); 0 none.
+  // The triangle's part in front of the near plane, as 3 or 4 corners to fan from the first
+  // (0: all behind it).
   static int clip_near(const ClipVertex* in, ClipVertex* out);
   float shade_of(const Eigen::Vector3d& normal_camera) const;
 
