@@ -164,7 +164,8 @@ Rasterizer ModelPoseTracker::occlusion_rasterizer() const {
   const cv::Size size(static_cast<int>(s.image_size.width * k) + 1, static_cast<int>(s.image_size.height * k) + 1);
   Rasterizer r(size, s.intrinsics.fx * k, s.intrinsics.fy * k, (s.intrinsics.cx + 0.5) * k - 0.5,
                (s.intrinsics.cy + 0.5) * k - 0.5, Pose::Identity());
-  r.clear({0, 0, 0}, {0, 0, 0});
+  if (s.furniture_depth.empty()) r.clear({0, 0, 0}, {0, 0, 0});
+  else r.restore(cv::Mat(), s.furniture_depth);
   return r;
 }
 
@@ -180,14 +181,8 @@ void ModelPoseTracker::on_search_threads(size_t count, size_t chunk, const std::
 OcclusionMap ModelPoseTracker::occlusion_map(int skip) const {
   const State& s = *state_;
   OcclusionMap map;
-  const bool furniture = !s.furniture_depth.empty();
   Rasterizer r = occlusion_rasterizer();
-  if (furniture) {
-    r.restore(cv::Mat(), s.furniture_depth);
-    map.labels = s.furniture_labels.clone();
-  } else {
-    map.labels = cv::Mat::zeros(r.depth().size(), CV_8U);
-  }
+  map.labels = s.furniture_depth.empty() ? cv::Mat(cv::Mat::zeros(r.depth().size(), CV_8U)) : s.furniture_labels.clone();
   for (size_t p = 0; p < models_.size(); ++p) {
     if (static_cast<int>(p) == skip) continue;
     // A part not planned for (a tray) lies under what it carries and hides none of it: the
@@ -340,9 +335,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     if (riding) resting[k] = false;
     // A resting part that a moving one passes in front of stays where it is, unmeasured: what
     // is left of its silhouette is too little to tell a move from the occluder's pull.
-    std::vector<bool> passing = moving;  // (moving changes as the parts are gone through)
-    for (size_t j = 0; j < passing.size(); ++j) passing[j] = passing[j] || lost_moving[j];
-    if (resting[k] && passed_in_front(k, passing)) {
+    if (resting[k] && passed_in_front(k, moving, lost_moving)) {
       if (may_hold) hold_frame();
       continue;
     }
@@ -645,7 +638,8 @@ Eigen::Vector2d ModelPoseTracker::centre_in_image(size_t k, const Pose& camera_T
   return {K.fx * c.x() / c.z(), K.fy * c.y() / c.z()};
 }
 
-bool ModelPoseTracker::passed_in_front(size_t k, const std::vector<bool>& moving) const {
+bool ModelPoseTracker::passed_in_front(size_t k, const std::vector<bool>& moving,
+                                       const std::vector<bool>& lost_moving) const {
   const State& s = *state_;
   auto disc = [&](size_t i, Eigen::Vector2d& centre, double& radius, double& depth) {
     const Eigen::Vector3d c = s.camera_T_part[i] * contours_[i]->centre();
@@ -659,7 +653,8 @@ bool ModelPoseTracker::passed_in_front(size_t k, const std::vector<bool>& moving
   double rk, rj, zk, zj;
   if (!disc(k, ck, rk, zk)) return false;
   for (size_t j = 0; j < models_.size(); ++j)
-    if (j != k && moving[j] && disc(j, cj, rj, zj) && zj < zk && (ck - cj).norm() < rk + rj) return true;
+    if (j != k && (moving[j] || lost_moving[j]) && disc(j, cj, rj, zj) && zj < zk && (ck - cj).norm() < rk + rj)
+      return true;
   return false;
 }
 

@@ -200,7 +200,8 @@ private:
   // Moves part k's start to where the start frame shows it (an operator's placement is a few
   // millimetres to centimetres off).
   void settle_start(const cv::Mat& image, size_t k);
-  Rasterizer occlusion_rasterizer() const;  // at the occlusion map's scale, cleared
+  // At the occlusion map's scale, holding the furniture's depth once it is drawn (else cleared).
+  Rasterizer occlusion_rasterizer() const;
   // work(i) for every i in [0, count), `chunk` at a time on the search threads (each i must
   // write only its own result).
   void on_search_threads(size_t count, size_t chunk, const std::function<void(size_t)>& work) const;
@@ -208,7 +209,8 @@ private:
   // principal point (only differences and distances of these are used).
   Eigen::Vector2d centre_in_image(size_t k, const Pose& camera_T_part) const;
   // Whether a moving part, nearer the camera, overlaps part k's image (bounding circles).
-  bool passed_in_front(size_t k, const std::vector<bool>& moving) const;
+  // (`lost_moving`: parts lost in their carry a few frames ago, lost_mover_frames, count too.)
+  bool passed_in_front(size_t k, const std::vector<bool>& moving, const std::vector<bool>& lost_moving) const;
   // Part k looked for around its last pose: the best of the tracked candidates.
   RegionFrameResult search(const cv::Mat& image, int k, const OcclusionMap& map) const;
   // Whether a measurement shows its part: it stands out at least `bar` (the part's contrast bar)
