@@ -19,18 +19,21 @@
 
 namespace demoplan::fuzz {
 
-// A folder of this process's own in the temp dir (libFuzzer's -fork children run at once).
+// A folder of this process's own in the temp dir (libFuzzer's -fork children run at once),
+// removed at exit. The path is never destroyed: the exit handler is registered before a
+// function-local static's destructor would be, so it would run after it and read freed memory.
 inline const std::filesystem::path& work_dir() {
-  static const std::filesystem::path dir = [] {
-    const auto d = std::filesystem::temp_directory_path() / ("demoplan-fuzz-" + std::to_string(getpid()));
-    std::filesystem::create_directories(d);
+  static const std::filesystem::path* const dir = [] {
+    const auto* d =
+        new std::filesystem::path(std::filesystem::temp_directory_path() / ("demoplan-fuzz-" + std::to_string(getpid())));
+    std::filesystem::create_directories(*d);
     std::atexit([] {
       std::error_code ec;
       std::filesystem::remove_all(work_dir(), ec);
     });
     return d;
   }();
-  return dir;
+  return *dir;
 }
 
 // Writes the input to <work_dir>/<name> (the name's extension selects the reader for some
