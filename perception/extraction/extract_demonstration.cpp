@@ -85,6 +85,7 @@ ExtractionResult extract_demonstration(const std::string& video_path, const Came
     if (o.progress) o.progress(f + 1, frames);
   }
   r.raw = tracker.finish();
+  for (const std::string& w : tracker.warnings()) r.warnings.push_back(w);
   check_rows(r.raw, tracker);
   r.raw.resize(frames);
   if (!bop.empty()) fuse_bop_detections(r.raw, bop, r.world_T_camera, o.bop_csv, o.bop_weight, &r.warnings);

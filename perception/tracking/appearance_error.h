@@ -21,4 +21,16 @@ double appearance_error(const cv::Mat& image, const PinholeIntrinsics& camera, c
                         const RenderMesh& mesh, const Pose& camera_T_part, const OcclusionMap& occlusion, int part,
                         int min_pixels = 50);
 
+// The same comparison in full: the mean difference (negative when nothing shows), over how many
+// pixels, and of them how many differ by more than `outlier` on average over the channels (> 0:
+// something not modelled, such as a hand, in front of the part there).
+struct PrintDifference {
+  double error = -1.0;
+  int pixels = 0;
+  int outliers = 0;
+};
+PrintDifference print_difference(const cv::Mat& image, const PinholeIntrinsics& camera, const Pose& world_T_camera,
+                                 const RenderMesh& mesh, const Pose& camera_T_part, const OcclusionMap& occlusion,
+                                 int part, double outlier = 0.0);
+
 }  // namespace demoplan::perception

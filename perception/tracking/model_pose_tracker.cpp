@@ -99,6 +99,7 @@ void ModelPoseTracker::start(const TrackingStart& start) {
     for (auto& j : jobs) contours_.push_back(j.get());
   }
   state_ = std::make_unique<State>();
+  warnings_.clear();
   State& s = *state_;
   const Camera& c = start.camera;
   if (!c.world_T_camera) throw std::logic_error("ModelPoseTracker::start without the camera pose");
@@ -228,6 +229,17 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     for (size_t k = 0; k < models_.size(); ++k)
       learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], map, static_cast<int>(k), s.colors[k],
                    options_.region);
+    // Starts the frame does not bear out (start_cover_difference).
+    for (size_t k = 0; k < models_.size(); ++k) {
+      const PrintDifference d = print_difference(image, s.intrinsics, s.world_T_camera, models_[k].mesh,
+                                                 s.camera_T_part[k], map, static_cast<int>(k), options_.start_cover_difference);
+      if (d.pixels == 0 || d.outliers <= options_.start_covered_fraction * d.pixels) continue;
+      const int percent = static_cast<int>(std::lround(100.0 * d.outliers / d.pixels));
+      warnings_.push_back(init_source_ + ": part '" + models_[k].id + "', frame " + std::to_string(frame) + ": " +
+                          std::to_string(percent) +
+                          " % of what shows of it does not look like its mesh there (a hand in front of it? its "
+                          "start off?): its track may start off, check its first frames");
+    }
     // Parts rest where a demonstration starts: each holds its depth from the first frame on.
     for (size_t k = 0; k < models_.size(); ++k) s.centres[k].assign(3, centre_in_image(k, s.camera_T_part[k]));
     for (size_t k = 0; k < models_.size(); ++k) s.rest_rotation.push_back(s.world_T_camera.linear() * s.camera_T_part[k].linear());

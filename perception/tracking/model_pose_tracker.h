@@ -168,6 +168,13 @@ struct ModelTrackerOptions {
   // On the start frame: the part segmented around its start (GrabCut), and the start refined on
   // that segmentation until it stays (at most this many rounds at its depth, as many free).
   int settle_grabcut_iterations = 4;
+  // A part whose print (appearance_error.h) differs from the start frame by more than
+  // `start_cover_difference` (0-255, mean over the channels) in more than
+  // `start_covered_fraction` of the pixels it shows in, once settled, is not what the frame
+  // shows there: something not modelled is over it (the demonstrator's hand: waiter_0, its
+  // track pulled 39 mm onto the hand), or its start is off. The operator is warned.
+  double start_cover_difference = 20.0;
+  double start_covered_fraction = 0.1;
   int settle_rounds = 10;
   double settle_visible_fraction = 0.7;  // of its silhouette: a start less visible is kept as it is
   double settle_contrast_gain = 0.03;  // a settled start is taken when it stands out this much more
@@ -191,6 +198,7 @@ public:
   void start(const TrackingStart& start) override;
   std::vector<PoseObservation> track(int frame, const cv::Mat& image) override;
   PoseTracks finish() override;
+  std::vector<std::string> warnings() const override { return warnings_; }
 
 private:
   struct State;
@@ -252,6 +260,7 @@ private:
   std::vector<TrackedPart> parts_;
   std::vector<std::unique_ptr<ContourModel>> contours_;  // built on the first start()
   std::unique_ptr<State> state_;
+  std::vector<std::string> warnings_;
 };
 
 // The tracker for the parts of a marker scene (its markers, if any, are not used): their meshes

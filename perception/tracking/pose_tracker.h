@@ -54,6 +54,9 @@ public:
   virtual std::vector<PoseObservation> track(int frame, const cv::Mat& image) = 0;
   // Tracks over every frame seen, one row per part in parts() order.
   virtual PoseTracks finish() = 0;
+  // What the operator should know about the tracks (a start the frame does not bear out), one
+  // line each naming the file and the part or frame; read after finish().
+  virtual std::vector<std::string> warnings() const { return {}; }
 };
 
 }  // namespace demoplan::perception

@@ -90,6 +90,7 @@ public:
     return {{0, s}};
   }
   PoseTracks finish() override { return tracks_; }
+  std::vector<std::string> warnings() const override { return {"init.json: part 'YCBV_02', frame 0: doubtful"}; }
 
   int starts = 0;
   TrackingStart started_with;
@@ -133,6 +134,8 @@ TEST_F(Extraction, DrivesTheTrackerItIsGiven) {
   EXPECT_NEAR(d.events[1].frame, release, 1);
   EXPECT_TRUE(d.events[0].poses[0].isApprox(a, 1e-9));
   EXPECT_TRUE(d.events[1].poses[0].isApprox(b, 1e-9));
+  // What it warns of reaches the result (the CLI's warning lines, the GUI's status).
+  EXPECT_NE(std::find(r.warnings.begin(), r.warnings.end(), "init.json: part 'YCBV_02', frame 0: doubtful"), r.warnings.end());
 }
 
 TEST_F(Extraction, MarkerTrackerReportsEveryFrameAsItGoes) {

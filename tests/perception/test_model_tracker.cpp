@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -545,6 +546,38 @@ TEST(ModelTracker, AStartFiveCentimetresOffIsCorrected) {
       }
     }
   }
+}
+
+// The demonstrator's hand over a part in the start frame (here a skin-coloured card over part
+// of the box): the start is not what the frame shows there, and the operator is told, naming
+// the start file, the part and the frame. A start in full view is not warned about.
+TEST(ModelTracker, WarnsOfAStartSomethingNotModelledCovers) {
+  const Pose box = box_pose(0.0, 0.0, 0.9);
+  const Clip clear = render_clip({box}, {false});
+  Clip covered = clear;
+  Rasterizer r(clear.size, clear.K.fx, clear.K.fy, clear.K.cx, clear.K.cy, Pose::Identity());
+  r.clear({180, 160, 150}, {120, 110, 100});
+  r.draw(box_mesh(kBox, {40, 40, 200}), box);
+  Pose card = Pose::Identity();
+  card.translation() << 0.02, 0.0, 0.6;
+  r.draw(box_mesh({0.04, 0.05, 0.005}, {150, 170, 210}), card);
+  covered.frames[0] = r.color().clone();
+  auto warnings = [](const Clip& clip) {
+    TrackerInit init;
+    init.parts.push_back({"box", clip.truth[0]});
+    ModelTrackerOptions o;
+    o.contour.views = 300;
+    ModelPoseTracker tracker({{"box", true, box_mesh(kBox, {40, 40, 200})}}, init, "init.json", {}, o);
+    tracker.start({clip.camera(), 30.0, 1});
+    tracker.track(0, clip.frames[0]);
+    tracker.finish();
+    return tracker.warnings();
+  };
+  EXPECT_TRUE(warnings(clear).empty()) << warnings(clear).front();
+  const std::vector<std::string> w = warnings(covered);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("init.json: part 'box', frame 0: ", 0), 0u) << w[0];
+  std::cout << w[0] << "\n";
 }
 
 // The starts are settled by GrabCut, which seeds its colour models from OpenCV's global random
