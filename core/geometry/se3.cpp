@@ -72,4 +72,11 @@ bool is_rotation(const Eigen::Matrix3d& R, double tol) {
          std::abs(R.determinant() - 1.0) <= tol;
 }
 
+Eigen::Vector3d axis_nearest_up(const Eigen::Matrix3d& world_R) {
+  const Eigen::Vector3d up = world_R.row(2).transpose();  // the world's +z in the body frame
+  int axis = 0;
+  up.cwiseAbs().maxCoeff(&axis);
+  return std::copysign(1.0, up[axis]) * Eigen::Vector3d::Unit(axis);
+}
+
 }  // namespace demoplan

@@ -27,4 +27,8 @@ Pose interpolate(const Pose& a, const Pose& b, double s);
 // True when R is a rotation: R^T R = I and det R = 1, both within tol.
 bool is_rotation(const Eigen::Matrix3d& R, double tol = 1e-6);
 
+// The axis of a body (its frame: +-x, +-y or +-z) that `world_R` turns nearest the world's +z:
+// the face of a box that looks up (the first axis of equally near ones).
+Eigen::Vector3d axis_nearest_up(const Eigen::Matrix3d& world_R);
+
 }  // namespace demoplan

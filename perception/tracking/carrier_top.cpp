@@ -8,12 +8,11 @@ namespace demoplan::perception {
 std::optional<std::vector<Eigen::Vector3d>> carrier_top(const Eigen::AlignedBox3d& box, const Pose& world_T_part,
                                                         double max_tilt) {
   // The box axis nearest the world's vertical, and which of its two faces is up.
-  const auto up = world_T_part.linear().row(2);
+  const Eigen::Vector3d nearest = axis_nearest_up(world_T_part.linear());
   int axis = 0;
-  for (int a = 1; a < 3; ++a)
-    if (std::abs(up(a)) > std::abs(up(axis))) axis = a;
-  const double sign = up(axis) > 0 ? 1.0 : -1.0;
-  if (sign * up(axis) < std::cos(max_tilt)) return std::nullopt;
+  nearest.cwiseAbs().maxCoeff(&axis);
+  const double sign = nearest[axis];
+  if ((world_T_part.linear() * nearest).z() < std::cos(max_tilt)) return std::nullopt;
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   std::vector<Eigen::Vector3d> top;
   for (const auto& [a, b] : {std::pair{0, 0}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {

@@ -89,10 +89,7 @@ std::vector<Eigen::Matrix3d> laid_on_sides(const Eigen::Matrix3d& last_rest) {
 }
 
 Eigen::Matrix3d standing_level(const Eigen::Matrix3d& world_R) {
-  const Eigen::Vector3d down = world_R.transpose() * -Eigen::Vector3d::UnitZ();  // part frame
-  int axis = 0;
-  down.cwiseAbs().maxCoeff(&axis);
-  const Eigen::Vector3d nearest = std::copysign(1.0, down[axis]) * Eigen::Vector3d::Unit(axis);
+  const Eigen::Vector3d nearest = -axis_nearest_up(world_R);  // the axis nearest down (part frame)
   return Eigen::Quaterniond::FromTwoVectors(world_R * nearest, -Eigen::Vector3d::UnitZ()).toRotationMatrix() * world_R;
 }
 

@@ -64,3 +64,13 @@ TEST(Se3, InterpolateIsLinearInTranslationAndSphericalInRotation) {
   EXPECT_TRUE(quarter.linear().isApprox(rotation_from_rpy(0, 0, 0.5), 1e-12));
   EXPECT_TRUE(is_rotation(interpolate(a, b, 0.7).linear()));
 }
+
+TEST(Se3, AxisNearestUpIsTheBodyAxisTurnedNearestTheWorldsVertical) {
+  EXPECT_TRUE(axis_nearest_up(Eigen::Matrix3d::Identity()).isApprox(Eigen::Vector3d::UnitZ()));
+  // Upside down and tilted 20 degrees: its -z looks up.
+  EXPECT_TRUE(axis_nearest_up(rotation_from_rpy(M_PI - 0.35, 0, 0.7)).isApprox(-Eigen::Vector3d::UnitZ()));
+  // Laid on its side (turned 80 degrees about x): its +y looks up (y turns towards +z).
+  EXPECT_TRUE(axis_nearest_up(rotation_from_rpy(1.4, 0, 0)).isApprox(Eigen::Vector3d::UnitY()));
+  // Turned 100 degrees about y: its x turns towards -z, so -x looks up.
+  EXPECT_TRUE(axis_nearest_up(rotation_from_rpy(0, 1.75, 0)).isApprox(-Eigen::Vector3d::UnitX()));
+}
