@@ -12,6 +12,8 @@
 #include <QtTest>
 
 #include "ui/document/document.h"
+#include "ui/document/event_detection.h"
+#include "ui/document/extraction_runner.h"
 #include "ui/widgets/timeline_widget.h"
 #include "ui_test_support.h"
 
@@ -139,6 +141,27 @@ private slots:
     const int labelled[] = {9, 48, 60, 97};
     for (int i = 0; i < 4; ++i) QVERIFY2(std::abs(d.events[i].frame - labelled[i]) <= 2, qPrintable(QString::number(d.events[i].frame)));
     QCOMPARE(doc_->undoStack()->count(), 1);
+  }
+
+  void detectionWarningsShowTheFirstAndListAllOnHover() {
+    ExtractionOutcome o;
+    o.ok = true;
+    o.frames = 130;
+    o.demonstration = doc_->demonstration();
+    o.warnings = {"init.json: part 'YCBV_02', frame 0: 24 % of what shows of it does not look like its mesh there",
+                  "init.json: part 'YCBV_05', frame 0: 30 % of what shows of it does not look like its mesh there"};
+    emit doc_->detection()->done(o);
+    QVERIFY2(panel_->detectionLabel()->text().startsWith(QStringLiteral("Found")), qPrintable(panel_->detectionLabel()->text()));
+    const QLabel* warnings = panel_->detectionWarningsLabel();
+    QVERIFY(!warnings->isHidden());
+    const QString text = warnings->text(), tip = warnings->toolTip();
+    QVERIFY2(text.contains(QStringLiteral("part 'YCBV_02'")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("1 more")) && !text.contains(QStringLiteral("YCBV_05")), qPrintable(text));
+    QVERIFY2(tip.contains(QStringLiteral("part 'YCBV_02'")) && tip.contains(QStringLiteral("part 'YCBV_05'")), qPrintable(tip));
+    // A detection without warnings takes the line away.
+    o.warnings.clear();
+    emit doc_->detection()->done(o);
+    QVERIFY(warnings->isHidden());
   }
 
   void aMarkerSceneWithoutMarkersChoosesThePartModels() {

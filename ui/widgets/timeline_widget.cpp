@@ -400,6 +400,13 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
   bar->addWidget(cancel_);
   bar->addWidget(detection_, 1);
   layout->addLayout(bar);
+  // What the detection warns of (a part's start the video does not bear out): on a line of its
+  // own under the bar, as the status beside the button has no room for it.
+  warnings_ = new QLabel(this);
+  warnings_->setWordWrap(true);
+  warnings_->setContentsMargins(8, 0, 8, 2);
+  warnings_->setVisible(false);
+  layout->addWidget(warnings_);
   connect(detect_, &QPushButton::clicked, this, [this] { doc_->detection()->start(); });
   connect(cancel_, &QPushButton::clicked, this, [this] { doc_->detection()->runner()->cancel(); });
   ExtractionRunner* ex = doc_->detection()->runner();
@@ -425,19 +432,21 @@ TimelinePanel::TimelinePanel(Document* doc, QWidget* parent) : QWidget(parent), 
                          .arg(o.demonstration.events.size())
                          .arg(o.frames)
                          .arg(o.seconds, 0, 'f', 1);
-      if (!o.warnings.empty()) text += QStringLiteral(" ") + QString::fromStdString(o.warnings.front());
       detection_->setText(text);
       detection_->setToolTip(text);
+      showDetectionWarnings(o.warnings);
     } else {
       detection_->setText(tr("<span style='color:%1'>Detection failed:</span> %2")
                               .arg(kErrorColor.name(), QString::fromStdString(o.error).toHtmlEscaped()));
       detection_->setToolTip(QString::fromStdString(o.error));
+      showDetectionWarnings({});
     }
     refreshDetection();
   });
   connect(doc_->steps(), &StepStatusModel::changed, this, &TimelinePanel::refreshDetection);
   connect(doc_, &Document::projectLoaded, this, [this] {
     detection_->clear();
+    showDetectionWarnings({});
     refreshDetection();
   });
   timeline_ = new TimelineWidget(doc, this);
@@ -486,6 +495,19 @@ int TimelinePanel::jumpToNextDoubt() {
     }
   jumpToDoubt(next);
   return next;
+}
+
+void TimelinePanel::showDetectionWarnings(const std::vector<std::string>& warnings) {
+  warnings_->setVisible(!warnings.empty());
+  if (warnings.empty()) return warnings_->clear();
+  // The first in full, a count of the others; all of them on hover.
+  QString text = tr("<span style='color:%1'>Warning:</span> %2")
+                     .arg(kWarningColor.name(), QString::fromStdString(warnings.front()).toHtmlEscaped());
+  if (warnings.size() > 1) text += tr(" (and %n more: hover here)", "", int(warnings.size()) - 1);
+  QStringList all;
+  for (const auto& w : warnings) all << QString::fromStdString(w);
+  warnings_->setText(text);
+  warnings_->setToolTip(all.join(QStringLiteral("\n")));
 }
 
 void TimelinePanel::refreshDetection() {

@@ -72,6 +72,7 @@ public:
   QPushButton* detectButton() const { return detect_; }
   QComboBox* trackerChoice() const { return tracker_; }
   QLabel* detectionLabel() const { return detection_; }
+  QLabel* detectionWarningsLabel() const { return warnings_; }
   // Jumps to the issue at `index` of Document::issues() (what clicking its link does).
   void jumpToIssue(int index);
   // Selects the part of Demonstration::doubts[index] and moves the playhead to its first frame.
@@ -82,6 +83,8 @@ public:
 private:
   void refresh();
   void refreshDetection();
+  // The extraction's warnings, on their own line (hidden when there are none).
+  void showDetectionWarnings(const std::vector<std::string>& warnings);
   Document* doc_;
   TimelineWidget* timeline_;
   QLabel* validity_;
@@ -90,6 +93,7 @@ private:
   QPushButton* cancel_;
   QProgressBar* progress_;
   QLabel* detection_;
+  QLabel* warnings_;
 };
 
 }  // namespace demoplan::ui
