@@ -172,7 +172,7 @@ struct ModelTrackerOptions {
   // `start_cover_difference` (0-255, mean over the channels) in more than
   // `start_covered_fraction` of the pixels it shows in, once settled, is not what the frame
   // shows there: something not modelled is over it (the demonstrator's hand: waiter_0, its
-  // track pulled 39 mm onto the hand), or its start is off. The operator is warned.
+  // track pulled 39 mm onto the forearm), or its start is off. The operator is warned.
   double start_cover_difference = 20.0;
   double start_covered_fraction = 0.1;
   int settle_rounds = 10;
