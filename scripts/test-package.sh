@@ -16,8 +16,10 @@ cd "$root"
 cli="$root/fs/usr/bin/demoplan-cli"
 
 out="$("$cli" check --task shelf_0 --robot panda --pose 0 --seconds 0.1 2>&1)"
-echo "$out" | head -1
-echo "$out" | grep -q "($root/fs/usr/share/demoplan/gtamp)" || { echo "FAIL: check did not load the unpacked data" >&2; exit 1; }
+# (Here-strings, not pipes: `head` and `grep -q` stop reading early, and with pipefail the
+# writer's SIGPIPE would fail the script without a word; it did once under a loaded ctest.)
+head -1 <<<"$out"
+grep -q "($root/fs/usr/share/demoplan/gtamp)" <<<"$out" || { echo "FAIL: check did not load the unpacked data" >&2; exit 1; }
 
 "$cli" plan --task shelf_0 --robot panda --pose 0 --seed 1 --out "$root/path.json" 2>"$root/plan.log" || {
   cat "$root/plan.log" >&2; echo "FAIL: the unpacked plan failed" >&2; exit 1; }
@@ -40,5 +42,5 @@ fi
 command -v lintian >/dev/null || { echo "FAIL: lintian is not installed (scripts/install-deps.sh installs it)" >&2; exit 1; }
 lint="$(lintian "$deb" 2>&1 | grep -v 'running with root privileges' || true)"
 [ -n "$lint" ] && echo "$lint"
-if echo "$lint" | grep -q '^E:'; then echo "FAIL: lintian reports errors" >&2; exit 1; fi
+if grep -q '^E:' <<<"$lint"; then echo "FAIL: lintian reports errors" >&2; exit 1; fi
 echo "package ok: $(basename "$deb"), $(du -h "$deb" | cut -f1)"

@@ -11,6 +11,7 @@
 #include "perception/events/evaluation.h"
 #include "perception/events/model_points.h"
 #include "perception/extraction/tracks_file.h"
+#include "perception/tracking/track_error.h"
 
 namespace demoplan::cli {
 
@@ -28,8 +29,14 @@ int run_evaluate(const EvaluateOptions& o) {
   const auto models = perception::benchmark_model_points(o.data_dir, truth.task);
   const perception::DemonstrationEvaluation e = perception::evaluate_demonstration(detected, truth, o.tolerance, models);
   std::optional<double> fps;
-  if (const std::string tracks = perception::tracks_path_for(o.demo); std::filesystem::exists(tracks))
-    fps = perception::load_tracks_file(tracks).frames_per_second;
+  std::optional<perception::TrackError> per_frame;
+  if (const std::string tracks = perception::tracks_path_for(o.demo); std::filesystem::exists(tracks)) {
+    const perception::TracksFile estimated = perception::load_tracks_file(tracks);
+    fps = estimated.frames_per_second;
+    // Every frame too, when the truth has its tracks beside it (synth's truth.tracks.json).
+    if (const std::string truth_tracks = perception::tracks_path_for(o.truth); std::filesystem::exists(truth_tracks))
+      per_frame = perception::track_error(estimated.raw, perception::load_tracks_file(truth_tracks).raw);
+  }
 
   std::cerr << "evaluation of " << o.demo << " against " << o.truth << " (tolerance " << o.tolerance << " frames)\n"
             << "  events              " << e.matched << " matched of " << e.truth_events << " true, "
@@ -41,6 +48,10 @@ int run_evaluate(const EvaluateOptions& o) {
             << "  rotation error      " << e.median_rotation_error_deg << " deg median, " << e.max_rotation_error_deg << " max\n";
   if (e.median_mssd_mm >= 0) std::cerr << "  MSSD                " << e.median_mssd_mm << " mm median (no symmetries)\n";
   if (fps) std::cerr << "  extraction speed    " << *fps << " frames/s\n";
+  if (per_frame)
+    std::cerr << "  every frame         " << per_frame->median_translation_mm << " mm median, "
+              << per_frame->p95_translation_mm << " mm 95th percentile, over " << per_frame->estimated_samples << " of "
+              << per_frame->truth_samples << " true part poses estimated\n";
   for (const auto& m : e.matches)
     if (m.timing_error != 0)
       std::cerr << "  event " << m.truth << " off by " << m.timing_error << " frame(s)\n";
@@ -54,6 +65,11 @@ int run_evaluate(const EvaluateOptions& o) {
                      {"max_rotation_error_deg", e.max_rotation_error_deg},
                      {"median_mssd_mm", e.median_mssd_mm >= 0 ? nlohmann::json(e.median_mssd_mm) : nlohmann::json()},
                      {"extraction_fps", fps ? nlohmann::json(*fps) : nlohmann::json()},
+                     {"frame_median_translation_error_mm",
+                      per_frame && per_frame->median_translation_mm >= 0 ? nlohmann::json(per_frame->median_translation_mm) : nlohmann::json()},
+                     {"frame_p95_translation_error_mm",
+                      per_frame && per_frame->p95_translation_mm >= 0 ? nlohmann::json(per_frame->p95_translation_mm) : nlohmann::json()},
+                     {"frame_coverage", per_frame ? nlohmann::json(per_frame->coverage) : nlohmann::json()},
                      {"truth_events", e.truth_events},
                      {"detected_events", e.detected_events},
                      {"matched_events", e.matched},

@@ -38,7 +38,7 @@ int run_cell_synth(const SynthCliOptions& o) {
             << "  video        " << r.video << "\n"
             << "  camera       " << r.camera << "\n"
             << "  scene        " << r.scene << "\n"
-            << "  truth        " << r.truth << "\n"
+            << "  truth        " << r.truth << ", " << r.truth_tracks << "\n"
             << "  init         " << r.init << "\n"
             << "  calibration  " << r.calibration_video << ", " << r.board << ", " << r.camera_truth << "\n";
   if (!r.failure.empty()) std::cerr << "  fewer picks than asked: " << r.failure << "\n";
@@ -49,7 +49,8 @@ int run_cell_synth(const SynthCliOptions& o) {
     std::cout << nlohmann::json{{"cell", o.cell},          {"picks", r.picks},        {"failure", r.failure}, {"redraws", r.redraws},
                                 {"frames", r.frames},      {"fps", r.fps},            {"events", r.events},
                                 {"video", r.video},        {"camera", r.camera},      {"scene", r.scene},
-                                {"truth", r.truth},        {"init", r.init},          {"calibration_video", r.calibration_video},
+                                {"truth", r.truth},        {"truth_tracks", r.truth_tracks}, {"init", r.init},
+                                {"calibration_video", r.calibration_video},
                                 {"board", r.board},        {"camera_truth", r.camera_truth},
                                 {"render_time_s", r.render_seconds}}
                      .dump()
@@ -69,14 +70,14 @@ int run_synth(SynthCliOptions o) {
             << "  video       " << r.video << "\n"
             << "  camera      " << r.camera << "\n"
             << "  scene       " << r.scene << "\n"
-            << "  truth       " << r.truth << "\n"
+            << "  truth       " << r.truth << ", " << r.truth_tracks << "\n"
             << "  init        " << r.init << "\n";
   if (!r.bop_csv.empty()) std::cerr << "  detections  " << r.bop_csv << ", " << r.hands << "\n";
   std::cerr << "  time        " << r.render_seconds << " s\n";
   if (o.json) {
     nlohmann::json j{{"task", o.synth.task}, {"frames", r.frames}, {"fps", r.fps},     {"events", r.events},
                      {"video", r.video},     {"camera", r.camera}, {"scene", r.scene}, {"truth", r.truth},
-                     {"init", r.init},       {"render_time_s", r.render_seconds}};
+                     {"truth_tracks", r.truth_tracks}, {"init", r.init}, {"render_time_s", r.render_seconds}};
     if (!r.bop_csv.empty()) j["bop_csv"] = r.bop_csv, j["hands"] = r.hands;
     std::cout << j.dump() << std::endl;
   }

@@ -20,6 +20,7 @@
 #include "core/model/kinematics.h"
 #include "core/model/robot_model.h"
 #include "perception/camera/camera_model.h"
+#include "perception/extraction/tracks_file.h"
 #include "perception/importers/bop_csv.h"
 #include "perception/importers/hand_detections.h"
 #include "perception/markers/marker_scene.h"
@@ -329,6 +330,35 @@ SynthOutput render_demonstration(const SynthOptions& o, const std::string& out_d
   for (const auto& m : markers.objects)
     if (m.id == kTrayId) init.parts.push_back({m.id, tray_centre(script, 0)});
   save_tracker_init(out.init, init);
+  // Every part's true pose in every frame (and the tray's), as an extraction's tracks file: what
+  // a tracker's per-frame estimates are compared with.
+  ExtractionResult truth_tracks;
+  PoseTracks& tracks = truth_tracks.raw;
+  tracks.fps = script.fps;
+  tracks.object_ids = script.object_ids;
+  tracks.planning.assign(script.object_ids.size(), true);
+  const bool has_tray = std::any_of(markers.objects.begin(), markers.objects.end(), [](const auto& m) { return m.id == kTrayId; });
+  if (has_tray) {
+    tracks.object_ids.push_back(kTrayId);
+    tracks.planning.push_back(false);
+  }
+  tracks.resize(script.frames);
+  for (int f = 0; f < script.frames; ++f)
+    for (size_t k = 0; k < tracks.object_ids.size(); ++k) {
+      PoseSample& s = tracks.samples[k][f];
+      const bool part = k < script.object_ids.size();
+      s.valid = part || script.tray[f].has_value();
+      if (!s.valid) continue;
+      s.pose = part ? script.poses[f][k] : tray_centre(script, f);
+      s.confidence = 1.0;
+    }
+  truth_tracks.smoothed = tracks;
+  truth_tracks.tracker = "truth";
+  truth_tracks.extrinsics_source = "file";
+  truth_tracks.world_T_camera = world_T_camera;
+  truth_tracks.frames = script.frames;
+  out.truth_tracks = tracks_path_for(out.truth);
+  save_tracks_file(out.truth_tracks, truth_tracks);
   out.events = static_cast<int>(truth.events.size());
   if (o.detections) {
     out.bop_csv = (fs::path(out_dir) / "bop.csv").string();

@@ -5,9 +5,11 @@
 // ground truth beside the video. Headless and deterministic for a given seed.
 //
 // Writes into the output folder: video.mp4 (video.mkv for FFV1, video.avi for MJPG), camera.json (demoplan-camera), scene.json
-// (demoplan-marker-scene), truth.json (demoplan-demonstration), init.json (demoplan-tracker-init:
-// every part's pose in frame 0, where a model-based tracker starts) and, on request, bop.csv and
-// hands.json (simulated outputs of a 6D pose estimator and of a hand-contact detector).
+// (demoplan-marker-scene), truth.json (demoplan-demonstration), truth.tracks.json (every part's
+// true pose in every frame, in the tracks file of an extraction: tracks_file.h), init.json
+// (demoplan-tracker-init: every part's pose in frame 0, where a model-based tracker starts) and,
+// on request, bop.csv and hands.json (simulated outputs of a 6D pose estimator and of a
+// hand-contact detector).
 #include <atomic>
 #include <functional>
 #include <string>
@@ -36,7 +38,7 @@ struct SynthOptions {
 };
 
 struct SynthOutput {
-  std::string video, camera, scene, truth, init, bop_csv, hands;
+  std::string video, camera, scene, truth, truth_tracks, init, bop_csv, hands;
   int frames = 0;
   int events = 0;
   double fps = 30.0;

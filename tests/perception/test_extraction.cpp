@@ -7,13 +7,16 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <optional>
+#include <vector>
 
 #include "core/error.h"
 #include "core/geometry/se3.h"
 #include "perception/camera/camera_model.h"
 #include "perception/events/evaluation.h"
 #include "perception/extraction/extract_demonstration.h"
+#include "perception/extraction/tracks_file.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/synthetic_video.h"
 #include "perception/tracking/marker_pose_tracker.h"
@@ -136,6 +139,38 @@ TEST_F(Extraction, DrivesTheTrackerItIsGiven) {
   EXPECT_TRUE(d.events[1].poses[0].isApprox(b, 1e-9));
   // What it warns of reaches the result (the CLI's warning lines, the GUI's status).
   EXPECT_NE(std::find(r.warnings.begin(), r.warnings.end(), "init.json: part 'YCBV_02', frame 0: doubtful"), r.warnings.end());
+}
+
+// The synthetic video's truth in every frame, beside truth.json as an extraction's tracks: each
+// part where truth.json's events put it, and what the marker tracker reports per frame within
+// millimetres of it.
+TEST_F(Extraction, SynthWritesEveryPartsTruePoseInEveryFrame) {
+  ASSERT_EQ(out_.truth_tracks, tracks_path_for(out_.truth));
+  const TracksFile t = load_tracks_file(out_.truth_tracks);
+  EXPECT_EQ(t.tracker, "truth");
+  const Demonstration truth = load_demonstration(out_.truth);
+  ASSERT_EQ(t.raw.object_ids, truth.object_ids);
+  ASSERT_EQ(t.raw.frames, out_.frames);
+  for (const auto& row : t.raw.samples)
+    for (const PoseSample& s : row) ASSERT_TRUE(s.valid);
+  for (const auto& e : truth.events)
+    for (size_t k = 0; k < truth.object_ids.size(); ++k)
+      EXPECT_TRUE(t.raw.samples[k][e.frame].pose.isApprox(e.poses[k], 1e-6)) << "frame " << e.frame << ", part " << k;
+  // Carried between its grasp and release: it moves.
+  const auto& grasp = truth.events.front();
+  const int mid = (grasp.frame + truth.events[1].frame) / 2;
+  EXPECT_GT((t.raw.samples[grasp.object][mid].pose.translation() - grasp.poses[grasp.object].translation()).norm(), 0.02);
+  // The marker tracker's estimates, frame by frame.
+  const ExtractionResult r = extract();
+  std::vector<double> errors;
+  for (size_t k = 0; k < truth.object_ids.size(); ++k)
+    for (int f = 0; f < out_.frames; ++f)
+      if (r.raw.samples[k][f].valid)
+        errors.push_back((r.raw.samples[k][f].pose.translation() - t.raw.samples[k][f].pose.translation()).norm() * 1e3);
+  ASSERT_GE(errors.size(), static_cast<size_t>(out_.frames / 2));
+  std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+  std::cout << "marker tracker, per frame: median " << errors[errors.size() / 2] << " mm over " << errors.size() << " samples\n";
+  EXPECT_LT(errors[errors.size() / 2], 2.0);
 }
 
 TEST_F(Extraction, MarkerTrackerReportsEveryFrameAsItGoes) {

@@ -43,7 +43,7 @@ TEST(PerceptionCli, SynthExtractEvaluate) {
   ASSERT_EQ(s.code, 0) << s.err;
   const auto js = nlohmann::json::parse(s.out);
   EXPECT_EQ(js["events"], 2);
-  for (const char* f : {"video.mp4", "camera.json", "scene.json", "truth.json"}) EXPECT_TRUE(fs::exists(dir / f)) << f;
+  for (const char* f : {"video.mp4", "camera.json", "scene.json", "truth.json", "truth.tracks.json"}) EXPECT_TRUE(fs::exists(dir / f)) << f;
 
   const CliRun e = run("extract " + d + "/video.mp4 --camera " + d + "/camera.json --scene " + d + "/scene.json --out " + d +
                     "/demo.json --json");
@@ -61,6 +61,10 @@ TEST(PerceptionCli, SynthExtractEvaluate) {
     EXPECT_TRUE(jv.contains(k)) << k;
   EXPECT_DOUBLE_EQ(jv["event_recall"].get<double>(), 1.0);
   EXPECT_DOUBLE_EQ(jv["event_precision"].get<double>(), 1.0);
+  // Every frame too, against synth's truth.tracks.json: the markers' estimates within millimetres.
+  EXPECT_GT(jv["frame_coverage"].get<double>(), 0.9);
+  EXPECT_LT(jv["frame_median_translation_error_mm"].get<double>(), 2.0);
+  EXPECT_GE(jv["frame_p95_translation_error_mm"].get<double>(), jv["frame_median_translation_error_mm"].get<double>());
 
   // Bad input: exit 2 with one line naming the file.
   std::ofstream(dir / "broken.mp4") << "not a video";
