@@ -325,11 +325,6 @@ SynthOutput render_demonstration(const SynthOptions& o, const std::string& out_d
   save_camera(out.camera, camera);
   save_marker_scene(out.scene, markers);
   save_demonstration(out.truth, truth);
-  TrackerInit init;
-  for (size_t k = 0; k < script.object_ids.size(); ++k) init.parts.push_back({script.object_ids[k], script.poses.front()[k]});
-  for (const auto& m : markers.objects)
-    if (m.id == kTrayId) init.parts.push_back({m.id, tray_centre(script, 0)});
-  save_tracker_init(out.init, init);
   // Every part's true pose in every frame (and the tray's), as an extraction's tracks file: what
   // a tracker's per-frame estimates are compared with.
   ExtractionResult truth_tracks;
@@ -359,6 +354,11 @@ SynthOutput render_demonstration(const SynthOptions& o, const std::string& out_d
   truth_tracks.frames = script.frames;
   out.truth_tracks = tracks_path_for(out.truth);
   save_tracks_file(out.truth_tracks, truth_tracks);
+  // Where a model-based tracker starts: the truth in frame 0.
+  TrackerInit init;
+  for (size_t k = 0; k < tracks.object_ids.size(); ++k)
+    if (tracks.samples[k][0].valid) init.parts.push_back({tracks.object_ids[k], tracks.samples[k][0].pose});
+  save_tracker_init(out.init, init);
   out.events = static_cast<int>(truth.events.size());
   if (o.detections) {
     out.bop_csv = (fs::path(out_dir) / "bop.csv").string();
