@@ -1,5 +1,7 @@
 #include "core/demo/settle_demonstration.h"
 
+#include <cmath>
+
 #include "core/scene/support.h"
 
 namespace demoplan {
@@ -21,7 +23,12 @@ Demonstration settle_on_supports(const Scene& scene, Demonstration d, const Sett
     for (size_t o = 0; o < e.poses.size() && o < faces.size(); ++o) {
       if (faces[o].empty() || !e.pose_frame(static_cast<int>(o)).empty()) continue;
       auto snapped = snap_to_support(faces[o], e.poses[o], furniture, options.snap);
-      if (!snapped && i < moving.size()) snapped = snap_to_support(faces[o], e.poses[o], moving[i], onto_moving);
+      // Onto a moving support when there is none of the furniture that near, or it is nearer (a
+      // part on a tray on a table is within centimetres of both tops).
+      if (i < moving.size())
+        if (const auto on_top = snap_to_support(faces[o], e.poses[o], moving[i], onto_moving);
+            on_top && (!snapped || std::abs(on_top->shift) < std::abs(snapped->shift)))
+          snapped = on_top;
       if (snapped) e.poses[o] = snapped->pose;
     }
   }

@@ -2,8 +2,9 @@
 // A demonstration measured from video puts resting parts a millimetre into or above their
 // support, or tilted a fraction of a degree: enough for the planner to find the start in
 // collision. Settling moves every world pose that nearly rests on a furniture support onto it
-// (rest_pose.h's snap), or else onto a moving support given per event (a tray); poses far from
-// any support, or on a robot link, are kept as they are.
+// (rest_pose.h's snap), or onto a moving support given per event (a tray) when there is none
+// that near or the moving one is nearer; poses far from any support, or on a robot link, are
+// kept as they are.
 // Parts are matched to the scene's objects by id; a part the scene lacks is kept as it is.
 #include "core/demo/demonstration.h"
 #include "core/demo/rest_pose.h"

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "core/demo/settle_demonstration.h"
+#include "core/geometry/box_faces.h"
+#include "core/scene/support.h"
 #include "core/error.h"
 #include "perception/camera/board_extrinsics.h"
 #include "perception/events/demonstration_builder.h"
@@ -29,17 +31,27 @@ void check_rows(const PoseTracks& tracks, const PoseTracker& tracker) {
 }
 
 // The tops of the parts not planned for (trays) at each event's frame, where last seen then:
-// the supports the planning parts resting on them are settled on.
-EventSupports carrier_tops(const PoseTracks& tracks, const std::vector<TrackedPart>& parts, const Demonstration& d) {
+// the supports the planning parts resting on them are settled on. A carrier that rests on the
+// furniture then is settled there first, as the parts are: its depth, from its image alone, is
+// its weakest coordinate (waiter_0's tray 27 mm off along the line of sight after its ride), and
+// the parts on it would take that error over.
+EventSupports carrier_tops(const PoseTracks& tracks, const std::vector<TrackedPart>& parts, const Demonstration& d,
+                           const Scene& scene, const SnapOptions& snap) {
+  std::vector<std::vector<Eigen::Vector3d>> furniture;
+  for (const auto& s : support_polygons(scene))
+    if (s.robot_link < 0) furniture.push_back(s.vertices);
   EventSupports tops(d.events.size());
   for (size_t k = 0; k < parts.size() && k < tracks.samples.size(); ++k) {
     if (parts[k].planning) continue;
+    const auto faces = box_faces(parts[k].extent);
     const auto& samples = tracks.samples[k];
     for (size_t i = 0; i < d.events.size(); ++i) {
       int f = std::min(d.events[i].frame, static_cast<int>(samples.size()) - 1);
       while (f >= 0 && !samples[f].valid) --f;
       if (f < 0) continue;
-      if (auto top = carrier_top(parts[k].extent, samples[f].pose)) tops[i].push_back(std::move(*top));
+      Pose pose = samples[f].pose;
+      if (const auto settled = snap_to_support(faces, pose, furniture, snap)) pose = settled->pose;
+      if (auto top = carrier_top(parts[k].extent, pose)) tops[i].push_back(std::move(*top));
     }
   }
   return tops;
@@ -101,7 +113,7 @@ ExtractionResult extract_demonstration(const std::string& video_path, const Came
   if (o.scene) {
     SettleOptions settle = o.settle;
     settle.snap.viewpoint = r.world_T_camera.translation();
-    const EventSupports trays = carrier_tops(r.raw, tracker.parts(), r.demonstration);
+    const EventSupports trays = carrier_tops(r.raw, tracker.parts(), r.demonstration, *o.scene, settle.snap);
     r.demonstration = settle_on_supports(*o.scene, std::move(r.demonstration), settle, trays);
   }
   r.smoothed = smooth_tracks(r.raw, r.contacts, o.contacts);

@@ -131,5 +131,27 @@ TEST(SupportedRests, APartOnATrayIsSettledOntoItsTopAlongItsLineOfSight) {
   EXPECT_TRUE(settle_on_supports(scene, d, options).events[1].poses[0].isApprox(released, 1e-12));
 }
 
+// A part on a thin tray lying on the table is within centimetres of both tops: seen with its
+// bottom 5 mm under the tray's top (11 mm over the table's), it is settled onto the nearer top,
+// the tray's, not pushed through the tray onto the table.
+TEST(SupportedRests, APartOnATrayLyingOnTheTableIsSettledOntoTheNearerTop) {
+  test::TempFolder dir("demoplan_supported_rests");
+  const Scene scene = build_cell_scene(table_cell(dir), {.data_dir = DEMOPLAN_DATA_DIR});
+  const double tray = kTop + 0.001 + 0.015;  // a 15 mm tray on the table
+  const Eigen::Vector3d eye(-1.0, 0.15, 2.0);
+  Demonstration d = one_pick(scene, 0.0);
+  Pose& released = d.events[1].poses[0];
+  released.translation().z() = tray + kHalfHeight + 0.001;
+  const Pose truth = released;
+  const Eigen::Vector3d sight = (truth.translation() - eye).normalized();
+  released.translation() += 0.006 / -sight.z() * sight;  // seen farther along its line of sight: 6 mm lower
+  SettleOptions options;
+  options.snap.viewpoint = eye;
+  const EventSupports on_table(2, {{{0.3, 0.0, tray}, {0.6, 0.0, tray}, {0.6, 0.3, tray}, {0.3, 0.3, tray}}});
+  EXPECT_LT((settle_on_supports(scene, d, options, on_table).events[1].poses[0].translation() - truth.translation()).norm(), 1e-3);
+  // Without the tray, the table holds it.
+  EXPECT_NEAR(settle_on_supports(scene, d, options).events[1].poses[0].translation().z(), kTop + kHalfHeight + 0.001, 1e-6);
+}
+
 }  // namespace
 }  // namespace demoplan

@@ -13,11 +13,13 @@
 
 #include "core/error.h"
 #include "core/geometry/se3.h"
+#include "core/scene/support.h"
 #include "perception/camera/camera_model.h"
 #include "perception/events/evaluation.h"
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/extraction/tracks_file.h"
 #include "perception/markers/marker_scene.h"
+#include "perception/render/part_meshes.h"
 #include "perception/synthetic/synthetic_video.h"
 #include "perception/tracking/marker_pose_tracker.h"
 #include "perception/tracking/pose_tracker.h"
@@ -63,13 +65,21 @@ void expect_matches_truth(const Demonstration& d, const Demonstration& truth, do
   EXPECT_TRUE(validate(d).empty());
 }
 
-// A tracker that looks at no image: one part rests at A, is carried in a straight line from
-// frame `grasp` to frame `release` and rests at B; it records how the pipeline drives it.
+// A tracker that looks at no image: each part rests at its A, is carried in a straight line
+// from frame `grasp` to frame `release` and rests at its B (a part whose A is its B stays put);
+// it records how the pipeline drives it.
+struct ScriptedPart {
+  TrackedPart part;
+  Pose a, b;
+};
 class ScriptedTracker final : public PoseTracker {
 public:
-  ScriptedTracker(const Pose& a, const Pose& b, int grasp, int release) : a_(a), b_(b), grasp_(grasp), release_(release) {
-    parts_.push_back({"YCBV_02", true, {}});
+  ScriptedTracker(std::vector<ScriptedPart> script, int grasp, int release)
+      : script_(std::move(script)), grasp_(grasp), release_(release) {
+    for (const auto& p : script_) parts_.push_back(p.part);
   }
+  ScriptedTracker(const Pose& a, const Pose& b, int grasp, int release)
+      : ScriptedTracker({{{"YCBV_02", true, {}}, a, b}}, grasp, release) {}
   std::string name() const override { return "scripted"; }
   const std::vector<TrackedPart>& parts() const override { return parts_; }
   bool needs_images() const override { return false; }
@@ -78,19 +88,25 @@ public:
     started_with = start;
     tracks_ = {};
     tracks_.fps = start.fps;
-    tracks_.object_ids = {parts_[0].id};
-    tracks_.planning = {true};
+    for (const auto& p : parts_) {
+      tracks_.object_ids.push_back(p.id);
+      tracks_.planning.push_back(p.planning);
+    }
     tracks_.resize(start.frames);
   }
   std::vector<PoseObservation> track(int frame, const cv::Mat& image) override {
     frames_seen.push_back(frame);
     images_given = images_given || !image.empty();
-    PoseSample s;
-    s.valid = true;
-    s.confidence = 1.0;
-    s.pose = interpolate(a_, b_, std::clamp(double(frame - grasp_) / (release_ - grasp_), 0.0, 1.0));
-    tracks_.samples[0][frame] = s;
-    return {{0, s}};
+    std::vector<PoseObservation> seen;
+    for (size_t k = 0; k < script_.size(); ++k) {
+      PoseSample s;
+      s.valid = true;
+      s.confidence = 1.0;
+      s.pose = interpolate(script_[k].a, script_[k].b, std::clamp(double(frame - grasp_) / (release_ - grasp_), 0.0, 1.0));
+      tracks_.samples[k][frame] = s;
+      seen.push_back({static_cast<int>(k), s});
+    }
+    return seen;
   }
   PoseTracks finish() override { return tracks_; }
   std::vector<std::string> warnings() const override { return {"init.json: part 'YCBV_02', frame 0: doubtful"}; }
@@ -101,7 +117,7 @@ public:
   bool images_given = false;
 
 private:
-  Pose a_, b_;
+  std::vector<ScriptedPart> script_;
   int grasp_, release_;
   std::vector<TrackedPart> parts_;
   PoseTracks tracks_;
@@ -139,6 +155,59 @@ TEST_F(Extraction, DrivesTheTrackerItIsGiven) {
   EXPECT_TRUE(d.events[1].poses[0].isApprox(b, 1e-9));
   // What it warns of reaches the result (the CLI's warning lines, the GUI's status).
   EXPECT_NE(std::find(r.warnings.begin(), r.warnings.end(), "init.json: part 'YCBV_02', frame 0: doubtful"), r.warnings.end());
+}
+
+// A tray lying on a table, its depth from its image 20 mm off along the line of sight (as a part's
+// a few metres away is), and a part put on it: the tray is settled on the table before the part is
+// settled on its top, so the part's release is where it was put, not moved with the tray's error.
+TEST_F(Extraction, APartPutOnATrayOnATableRestsOnTheSettledTray) {
+  const Camera camera = load_camera(out_.camera);
+  const Eigen::Vector3d eye = camera.world_T_camera->translation();
+  ExtractionOptions o;
+  o.scene = marker_scene_world(load_marker_scene(out_.scene), out_.scene, DEMOPLAN_DATA_DIR);
+  // The table: the largest furniture support.
+  std::vector<Eigen::Vector3d> table;
+  auto area = [](const std::vector<Eigen::Vector3d>& p) {
+    Eigen::Vector3d a = Eigen::Vector3d::Zero();
+    for (size_t i = 0; i < p.size(); ++i) a += p[i].cross(p[(i + 1) % p.size()]);
+    return a.norm() / 2;
+  };
+  for (const auto& s : support_polygons(*o.scene))
+    if (s.robot_link < 0 && (table.empty() || area(s.vertices) > area(table))) table = s.vertices;
+  ASSERT_FALSE(table.empty());
+  Eigen::Vector3d middle = Eigen::Vector3d::Zero();
+  for (const auto& v : table) middle += v / static_cast<double>(table.size());
+  // The tray, 40 x 30 x 1.5 cm, on the table's middle; tracked 20 mm farther along its line of sight.
+  const TrackedPart tray_part{"TRAY", false, Eigen::AlignedBox3d(Eigen::Vector3d(-0.2, -0.15, -0.0075), Eigen::Vector3d(0.2, 0.15, 0.0075))};
+  Pose tray = Pose::Identity();
+  tray.translation() = middle + Eigen::Vector3d(0, 0, 0.0075 + 0.001);
+  Pose tray_seen = tray;
+  tray_seen.translation() += 0.020 * (tray.translation() - eye).normalized();
+  // The part from its start on the table onto the tray, tracked 10 mm nearer along its line of
+  // sight there.
+  const Demonstration truth = load_demonstration(out_.truth);
+  const size_t k = 0;
+  ASSERT_EQ(truth.object_ids[k], "YCBV_02");
+  const Pose start = truth.events.front().poses[k];
+  const auto object = std::find_if(o.scene->objects.begin(), o.scene->objects.end(), [](auto& so) { return so.id == "YCBV_02"; });
+  ASSERT_NE(object, o.scene->objects.end());
+  Eigen::Vector3d part_middle = Eigen::Vector3d::Zero();
+  int corners = 0;
+  for (const auto& face : object_contact_polygons(*object))
+    for (const auto& v : face) part_middle += v, ++corners;
+  part_middle /= corners;
+  Pose put = start;
+  put.translation() += Eigen::Vector3d(middle.x(), middle.y(), start.translation().z() + 0.016) - start * part_middle;
+  Pose put_seen = put;
+  put_seen.translation() -= 0.010 * (put * part_middle - eye).normalized();
+  const int frames = out_.frames, grasp = frames / 4, release = frames / 2;
+  ScriptedTracker tracker({{{"YCBV_02", true, {}}, start, put_seen}, {tray_part, tray_seen, tray_seen}}, grasp, release);
+  const ExtractionResult r = extract_demonstration(out_.video, camera, tracker, "shelf_0", o);
+  const auto& events = r.demonstration.events;
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[1].type, EventType::Release);
+  EXPECT_LT((events[1].poses[k].translation() - put.translation()).norm(), 1e-3)
+      << "released " << (events[1].poses[k].translation() - put.translation()).transpose() << " m off";
 }
 
 // The synthetic video's truth in every frame, beside truth.json as an extraction's tracks: each
