@@ -19,6 +19,7 @@
 #include "bench/rapid_pose_tracker.h"
 #include "core/demo/benchmark_demonstration.h"
 #include "core/demo/benchmark_task.h"
+#include "core/statistics.h"
 #include "perception/camera/camera_model.h"
 #include "perception/events/contact_detector.h"
 #include "perception/events/demonstration_builder.h"
@@ -50,13 +51,6 @@ struct Condition {
   bool bop_only = false;  // no markers: the simulated BOP pose estimates (and the hands) only
   double lighting = 0.0;  // the light varies by this fraction over the video
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 struct Pool {
   int truth = 0, detected = 0, matched = 0;

@@ -10,6 +10,7 @@
 #include "app/cli/command.h"
 #include "core/demo/benchmark_demonstration.h"
 #include "core/demo/benchmark_scene.h"
+#include "core/statistics.h"
 #include "perception/events/evaluation.h"
 #include "perception/events/tracks_demonstration.h"
 
@@ -22,13 +23,6 @@ struct EvaluateTracksOptions {
   bool json = false;
   perception::TrackSegmentationOptions segmentation;
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 double max_of(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); }
 

@@ -6,6 +6,7 @@
 #include "core/demo/rest_pose.h"
 #include "core/error.h"
 #include "core/scene/support.h"
+#include "core/statistics.h"
 
 namespace demoplan {
 
@@ -240,10 +241,6 @@ PoseDeviation pose_deviation(const Demonstration& a, const Demonstration& b) {
   PoseDeviation out;
   out.pairs = static_cast<int>(t.size());
   if (t.empty()) return out;
-  auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-  };
   out.median_translation_mm = median(t);
   out.max_translation_mm = *std::max_element(t.begin(), t.end());
   out.median_rotation_deg = median(r);

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/demo/rest_pose.h"
+#include "core/statistics.h"
 
 namespace demoplan::perception {
 
@@ -13,13 +14,6 @@ namespace {
 
 double angle_between(const Pose& a, const Pose& b) {
   return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  const size_t m = v.size() / 2;
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(m), v.end());
-  return v[m];
 }
 
 // Where the samples are, robust to a few outliers (the same average as the event poses').
@@ -130,11 +124,8 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
       d1t.push_back((at(i).pose.translation() - at(i - 1).pose.translation()).norm());
       d1r.push_back(angle_between(at(i).pose, at(i - 1).pose));
     }
-  auto quantile = [](std::vector<double> v, double q) {
-    if (v.empty()) return 0.0;
-    const size_t k = static_cast<size_t>(q * (v.size() - 1));
-    std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
-    return v[k];
+  auto quantile = [](const std::vector<double>& v, double q) {
+    return order_statistic(v, static_cast<size_t>(q * static_cast<double>(std::max<size_t>(v.size(), 1) - 1)));
   };
   constexpr double kFirstDifference = 1.1 * 1.414;  // the 33rd percentile of a chi(3) is about 1.1
   const double sigma_t = std::max(median(d2t) / kSecondDifference, quantile(d1t, 0.33) / kFirstDifference);

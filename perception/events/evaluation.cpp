@@ -5,16 +5,11 @@
 #include <cstdlib>
 #include <tuple>
 
+#include "core/statistics.h"
+
 namespace demoplan::perception {
 
 namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 const std::string& id_of(const Demonstration& d, const ContactEvent& e) { return d.object_ids.at(e.object); }
 

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "core/demo/rest_pose.h"
+#include "core/statistics.h"
 
 namespace demoplan::perception {
 
@@ -26,19 +27,6 @@ bool rigid(const Pose& p) {
   if (!p.matrix().allFinite()) return false;
   const Eigen::Matrix3d R = p.linear();
   return (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-3 && R.determinant() > 0;
-}
-
-// The k-th smallest of v (0 when v is empty).
-double order_statistic(std::vector<double> v, size_t k) {
-  if (v.empty()) return 0.0;
-  const auto kth = v.begin() + static_cast<long>(std::min(k, v.size() - 1));
-  std::nth_element(v.begin(), kth, v.end());
-  return *kth;
-}
-
-double median(std::vector<double> v) {
-  const size_t mid = v.size() / 2;
-  return order_statistic(std::move(v), mid);
 }
 
 Eigen::Vector3d coordinate_median(const std::vector<Eigen::Vector3d>& points) {

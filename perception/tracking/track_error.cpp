@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/statistics.h"
+
 namespace demoplan::perception {
 
 TrackError track_error(const PoseTracks& estimated, const PoseTracks& truth) {
@@ -22,10 +24,9 @@ TrackError track_error(const PoseTracks& estimated, const PoseTracks& truth) {
   out.estimated_samples = static_cast<int>(errors.size());
   out.coverage = out.truth_samples > 0 ? static_cast<double>(out.estimated_samples) / out.truth_samples : 0.0;
   if (errors.empty()) return out;
-  std::sort(errors.begin(), errors.end());
-  auto at = [&](double q) { return errors[std::min(errors.size() - 1, static_cast<size_t>(std::floor(q * (errors.size() - 1) + 0.5)))]; };
-  out.median_translation_mm = at(0.5);
-  out.p95_translation_mm = at(0.95);
+  out.median_translation_mm = median(errors);
+  const auto rank = static_cast<size_t>(std::lround(0.95 * static_cast<double>(errors.size() - 1)));  // the nearest
+  out.p95_translation_mm = order_statistic(std::move(errors), rank);
   return out;
 }
 
