@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/statistics.h"
+
 namespace demoplan {
 
 Pose robust_static_pose(const PoseList& samples, double inlier_angle) {
@@ -13,8 +15,7 @@ Pose robust_static_pose(const PoseList& samples, double inlier_angle) {
   for (int k = 0; k < 3; ++k) {
     std::vector<double> v;
     for (const auto& s : samples) v.push_back(s.translation()[k]);
-    std::nth_element(v.begin(), v.begin() + static_cast<long>(n / 2), v.end());
-    out.translation()[k] = v[n / 2];
+    out.translation()[k] = order_statistic(std::move(v), n / 2);
   }
   std::vector<Eigen::Quaterniond> q;
   for (const auto& s : samples) q.emplace_back(Eigen::Quaterniond(s.linear()).normalized());

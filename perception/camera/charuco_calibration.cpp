@@ -15,6 +15,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.h"
+#include "core/statistics.h"
 #include "perception/markers/marker_detector.h"
 #include "perception/video/video_reader.h"
 
@@ -233,8 +234,7 @@ CharucoCalibration calibrate_charuco(const std::string& source_path, const Charu
                          std::to_string(board.squares_y) + " ChArUco, " + board.dictionary + ", ids " +
                          std::to_string(board.first_id) + "-" + std::to_string(board.first_id + board.marker_count() - 1) +
                          "; " + std::to_string(r.views.size()) + " of " + std::to_string(n) + " frames looked at)");
-  std::nth_element(sharp.begin(), sharp.begin() + long(sharp.size() / 2), sharp.end());
-  const double median_sharpness = sharp[sharp.size() / 2];
+  const double median_sharpness = order_statistic(sharp, sharp.size() / 2);
   for (auto& v : r.views)
     if (v.rejected.empty() && v.sharpness < o.blur_ratio * median_sharpness) v.rejected = "blurred";
 
@@ -277,9 +277,7 @@ CharucoCalibration calibrate_charuco(const std::string& source_path, const Charu
   };
   Calibrated c = run(kept);
   // Outliers (a misread corner, a rolling-shutter smear): dropped once, then calibrated again.
-  std::vector<double> errors = c.per_view;
-  std::nth_element(errors.begin(), errors.begin() + long(errors.size() / 2), errors.end());
-  const double limit = std::max(o.min_outlier_px, o.outlier_ratio * errors[errors.size() / 2]);
+  const double limit = std::max(o.min_outlier_px, o.outlier_ratio * order_statistic(c.per_view, c.per_view.size() / 2));
   std::vector<size_t> inliers;
   for (size_t m = 0; m < kept.size(); ++m)
     if (c.per_view[m] <= limit) inliers.push_back(kept[m]);

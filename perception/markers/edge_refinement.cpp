@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/statistics.h"
+
 namespace demoplan::perception {
 
 namespace {
@@ -97,10 +99,8 @@ bool refine_corners_on_edges(const cv::Mat& grey, std::array<cv::Point2f, 4>& co
       const cv::Point2d d = p - lines[k].point;
       residual.push_back(std::abs(d.x * lines[k].direction.y - d.y * lines[k].direction.x));
     }
-    std::vector<double> sorted = residual;
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
     // Off the line: farther than 3 robust standard deviations of the noise (0.35 px at least).
-    const double band = std::max(0.35, 3.0 * 1.4826 * sorted[sorted.size() / 2]);
+    const double band = std::max(0.35, 3.0 * 1.4826 * order_statistic(residual, residual.size() / 2));
     std::vector<cv::Point2d> on_line;
     for (size_t i = 0; i < edge.size(); ++i)
       if (residual[i] < band) on_line.push_back(edge[i]);
