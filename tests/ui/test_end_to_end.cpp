@@ -13,10 +13,13 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include "perception/events/tracks_demonstration.h"
 #include "ui/document/demo_poses.h"
 #include "ui/mainwindow/main_window.h"
 #include "ui/view3d/scene_view.h"
 #include "ui/widgets/export_dialog.h"
+#include "ui/widgets/part_tracks_panel.h"
+#include "ui/widgets/part_tracks_view.h"
 #include "ui/widgets/planner_panel.h"
 #include "ui/widgets/pose_editor.h"
 #include "ui/widgets/result_panel.h"
@@ -383,6 +386,44 @@ private slots:
           qPrintable(window_->stepBar()->state(Step::Poses).message));
     doc()->selectEvent(2);
     shoot(QStringLiteral("09-events-detected"));
+    // What the tracker measured stays for the Part Tracks panel: every part's track, each frame
+    // with its confidence, cut into rests and carries.
+    TrackDetection* measured = doc()->trackDetection();
+    QVERIFY(measured->fromVideo());
+    const auto tracks = measured->tracks();
+    QVERIFY(tracks);
+    const Demonstration& d = doc()->demonstration();
+    for (const std::string& id : d.object_ids) {
+      const int row = tracks->tracks.object_index(id);
+      QVERIFY2(row >= 0, id.c_str());
+      int seen = 0;
+      for (const auto& s : tracks->tracks.samples[size_t(row)])
+        if (s.valid) {
+          ++seen;
+          QVERIFY2(s.confidence > 0 && s.confidence <= 1, id.c_str());
+        }
+      QVERIFY2(seen > tracks->tracks.frames / 2, id.c_str());
+    }
+    // The part grasped at the selected event is carried from there in its track.
+    const ContactEvent& grasp = d.events[2];
+    QCOMPARE(grasp.type, EventType::Grasp);
+    const int row = tracks->tracks.object_index(d.object_ids[size_t(grasp.object)]);
+    bool carried = false;
+    for (const auto& s : tracks->segmentation.objects[size_t(row)].segments)
+      carried = carried || (s.kind == perception::SegmentKind::Carry && std::abs(s.first - grasp.frame) <= 3);
+    QVERIFY(carried);
+    window_->findChild<QDockWidget*>(QStringLiteral("PartTracksDock"))->show();
+    auto* panel = window_->findChild<PartTracksPanel*>();
+    QVERIFY(panel);
+    QVERIFY(test::waitFor([&] { return panel->view()->row() == row; }, 2000));
+    QVERIFY2(panel->summaryLabel()->text().startsWith(QStringLiteral("From the video (marker tracker): ")),
+             qPrintable(panel->summaryLabel()->text()));
+    const int mid = (grasp.frame + d.events[3].frame) / 2;
+    QCOMPARE(panel->view()->confidenceColor(mid).isValid(), true);
+    QVERIFY2(panel->view()->toolTipAt(panel->view()->axis().toX(mid)).contains(QStringLiteral("confidence")),
+             qPrintable(panel->view()->toolTipAt(panel->view()->axis().toX(mid))));
+    shoot(QStringLiteral("10-video-tracks"));
+    window_->findChild<QDockWidget*>(QStringLiteral("PartTracksDock"))->hide();
     doc()->undoStack()->undo();
   }
 };

@@ -7,6 +7,7 @@
 #include "perception/markers/marker_scene.h"
 #include "perception/tracking/tracker_init.h"
 #include "ui/document/document.h"
+#include "ui/document/track_detection.h"
 
 namespace demoplan::ui {
 
@@ -104,8 +105,12 @@ void EventDetection::onFinished(const ExtractionOutcome& o) {
   if (o.ok)
     // Measured rest poses float a few millimetres above or sink into their supports: put onto
     // them, as the planner needs (the CLI's plan does the same with a measured --demo).
+  {
     doc_->replaceDemonstration(settle_on_supports(doc_->scene(), o.demonstration),
                                tr("Detect events in the video (%1 events)").arg(o.demonstration.events.size()));
+    // What the tracker measured, frame by frame, for the Part Tracks panel.
+    doc_->trackDetection()->showVideoTracks(o.tracks, QString::fromStdString(o.tracker));
+  }
   emit done(o);
 }
 

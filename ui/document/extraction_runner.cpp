@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "perception/camera/camera_model.h"
+#include "perception/events/tracks_demonstration.h"
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/tracking/contour_model_file.h"
@@ -70,6 +71,12 @@ bool ExtractionRunner::start(ExtractionJob job) {
         outcome->warnings = r.warnings;
         outcome->frames = r.frames;
         outcome->seconds = r.seconds;
+        auto tracks = std::make_shared<perception::TracksDemonstration>();
+        tracks->tracks = r.raw;
+        tracks->segmentation = perception::segment_tracks(r.raw);
+        tracks->demonstration = outcome->demonstration;
+        outcome->tracks = std::move(tracks);
+        outcome->tracker = r.tracker;
         outcome->ok = true;
       }
     } catch (const std::exception& e) {

@@ -3,12 +3,17 @@
 // extract_demonstration) on a background thread, with progress and cancel. The result is a
 // demonstration in the scene's object order, ready to replace the current one as one undoable
 // edit.
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/demo/demonstration.h"
 #include "perception/tracking/tracker_init.h"
 #include "ui/document/background_job.h"
+
+namespace demoplan::perception {
+struct TracksDemonstration;  // perception/events/tracks_demonstration.h: kept out of document.h
+}
 
 namespace demoplan::ui {
 
@@ -32,6 +37,10 @@ struct ExtractionOutcome {
   std::vector<std::string> warnings;
   int frames = 0;
   double seconds = 0.0;
+  // Every part's pose and confidence in every frame as the tracker measured it (the tray too),
+  // cut into rests and carries: what the Part Tracks panel shows after a detection.
+  std::shared_ptr<const perception::TracksDemonstration> tracks;
+  std::string tracker;  // its name ("markers", "model")
 };
 
 class ExtractionRunner : public BackgroundJob {

@@ -33,6 +33,15 @@ int TrackDetection::detect() {
   return events;
 }
 
+void TrackDetection::showVideoTracks(std::shared_ptr<const perception::TracksDemonstration> tracks, const QString& tracker) {
+  tracks_ = std::move(tracks);
+  error_.clear();
+  from_video_ = tracks_ != nullptr;
+  source_ = from_video_ ? tr("from the video (%1 tracker)").arg(tracker == QLatin1String("markers") ? tr("marker") : tracker)
+                       : QString();
+  emit tracksChanged();
+}
+
 std::shared_ptr<const perception::TracksDemonstration> TrackDetection::tracks() {
   if (tracks_ || !error_.isEmpty() || !doc_->hasProject()) return tracks_;
   error_ = blocker();
@@ -43,6 +52,7 @@ std::shared_ptr<const perception::TracksDemonstration> TrackDetection::tracks() 
     t->tracks = perception::tracks_from_benchmark(*doc_->task());
     t->segmentation = perception::segment_tracks(t->tracks);
     tracks_ = std::move(t);
+    source_ = tr("from the task's pose tracks");
   } catch (const std::exception& e) {
     error_ = QString::fromUtf8(e.what());
   }
@@ -52,6 +62,8 @@ std::shared_ptr<const perception::TracksDemonstration> TrackDetection::tracks() 
 void TrackDetection::setTracks(std::shared_ptr<const perception::TracksDemonstration> tracks) {
   tracks_ = std::move(tracks);
   error_.clear();
+  from_video_ = false;
+  source_ = tracks_ ? tr("from the task's pose tracks") : QString();
   emit tracksChanged();
 }
 

@@ -4,7 +4,8 @@
 // carries and builds the demonstration from them. It takes well under 0.2 s for a benchmark task,
 // so it runs on the GUI thread. The result replaces the demonstration as one undoable edit; the
 // tracks and their segmentation stay here for the Part Tracks panel, which shows why each event
-// is where it is.
+// is where it is. A detection in the video (EventDetection) leaves the tracks it measured here
+// too, with each frame's confidence, for any project, a cell's as well.
 #include <QObject>
 #include <QString>
 #include <memory>
@@ -28,10 +29,16 @@ public:
   // InputError naming the task file) when nothing can be detected; the project is then unchanged.
   int detect();
 
-  // The tracks and their segmentation: those of the last detection, else segmented from the
-  // task on first use. Null without a project or when the task has no tracks (error() says why).
+  // The tracks and their segmentation: those of the last detection (from the task's tracks or in
+  // the video), else segmented from the task on first use. Null without a project or when there
+  // are none (error() says why).
   std::shared_ptr<const perception::TracksDemonstration> tracks();
   QString error() const { return error_; }
+  // Where the tracks come from, for the panel: the video's tracker (markers, model) or the task.
+  QString source() const { return source_; }
+  bool fromVideo() const { return from_video_; }
+  // The tracks a detection in the video measured (`tracker` names the tracker).
+  void showVideoTracks(std::shared_ptr<const perception::TracksDemonstration> tracks, const QString& tracker);
 
 signals:
   void tracksChanged();
@@ -42,6 +49,8 @@ private:
   Document* doc_;
   std::shared_ptr<const perception::TracksDemonstration> tracks_;
   QString error_;
+  QString source_;
+  bool from_video_ = false;
 };
 
 }  // namespace demoplan::ui

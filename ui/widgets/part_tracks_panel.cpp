@@ -96,7 +96,10 @@ void PartTracksPanel::refreshSummary() {
   }
   // The noise decides how wide a rest is: worth seeing next to the curves.
   auto count = [](int n, const QString& one, const QString& many) { return QString::number(n) + " " + (n == 1 ? one : many); };
-  QString text = count(rests, tr("rest"), tr("rests")) + ", " + count(carries, tr("carry"), tr("carries"));
+  QString text = doc_->trackDetection()->source();
+  if (!text.isEmpty()) text[0] = text[0].toUpper();
+  text += (text.isEmpty() ? QString() : QStringLiteral(": ")) + count(rests, tr("rest"), tr("rests")) + ", " +
+          count(carries, tr("carry"), tr("carries"));
   if (rides > 0) text += ", " + count(rides, tr("ride"), tr("rides"));
   text += tr(" · noise σ %1–%2 mm, %3° · %4 usable frames")
               .arg(o.noise.sigma_min * 1000, 0, 'f', 1)
@@ -104,9 +107,10 @@ void PartTracksPanel::refreshSummary() {
               .arg(o.noise.sigma_rotation * 180 / M_PI, 0, 'f', 1)
               .arg(o.noise.usable_frames);
   text += tr(" · <span style='color:%1'>▮</span> rest <span style='color:%2'>▮</span> carry "
-             "<span style='color:%3'>▨</span> doubt")
+             "<span style='color:%3'>▨</span> doubt · confidence <span style='color:%4'>▬</span> "
+             "<span style='color:%5'>▬</span> <span style='color:%6'>▬</span> not seen <span style='color:#cccccc'>▬</span>")
               .arg(kTrackRestColor.name(), objectColor(doc_->demonstration().object_index(t->tracks.object_ids[size_t(row)])).name(),
-                   kDoubtColor.name());
+                   kDoubtColor.name(), kOkColor.name(), kWarningColor.name(), kErrorColor.name());
   summary_->setText(text);
 }
 

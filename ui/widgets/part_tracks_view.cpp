@@ -21,7 +21,7 @@ namespace demoplan::ui {
 
 namespace {
 
-constexpr double kBandTop = 3, kBandH = 16, kStripGap = 8, kBottom = 6;
+constexpr double kBandTop = 3, kBandH = 16, kConfidenceH = 4, kStripGap = 8, kBottom = 6;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 const QColor kRestShade{kTrackRestColor.red(), kTrackRestColor.green(), kTrackRestColor.blue(), 50};
 
@@ -79,9 +79,14 @@ QRectF PartTracksView::segmentBand() const {
 
 bool PartTracksView::showsAngle() const { return height() >= kMinHeightWithAngle; }
 
+QRectF PartTracksView::confidenceStrip() const {
+  const FrameAxis a = axis();
+  return QRectF(QPointF(a.left(), kBandTop + kBandH + 1), QPointF(a.right(), kBandTop + kBandH + 1 + kConfidenceH));
+}
+
 QRectF PartTracksView::positionPlot() const {
   const FrameAxis a = axis();
-  const double top = kBandTop + kBandH + 4;
+  const double top = confidenceStrip().bottom() + 3;
   const double room = height() - top - kBottom;
   // On a small screen the dock is short: the position alone, the angle in the tooltip.
   const double h = showsAngle() ? (room - kStripGap) * 0.62 : room;
@@ -132,8 +137,10 @@ void PartTracksView::computeSeries() {
   for (size_t f = 0; f < samples.size() && !have_ref; ++f)
     if (samples[f].valid) ref = samples[f].pose, have_ref = true;
   series_.assign(samples.size(), {kNaN, kNaN, kNaN, kNaN});
+  confidence_.assign(samples.size(), kNaN);
   for (size_t f = 0; f < samples.size(); ++f) {
     if (!samples[f].valid) continue;
+    confidence_[f] = samples[f].confidence;
     const Eigen::Vector3d d = (samples[f].pose.translation() - ref.translation()) * 1000.0;
     const double angle = Eigen::AngleAxisd(ref.linear().transpose() * samples[f].pose.linear()).angle() * 180.0 / M_PI;
     series_[f] = {d.x(), d.y(), d.z(), angle};
@@ -226,6 +233,26 @@ void PartTracksView::paintSegments(QPainter& p) const {
     p.setPen(QPen(kDoubtColor.darker(115), 1.2));
     p.setBrush(Qt::NoBrush);
     p.drawRect(r);
+  }
+}
+
+QColor PartTracksView::confidenceColor(int frame) const {
+  if (frame < 0 || frame >= int(confidence_.size())) return {};
+  const double c = confidence_[size_t(frame)];
+  if (std::isnan(c)) return QColor(0xcc, 0xcc, 0xcc);
+  return c < kLowConfidence ? kErrorColor : c < 0.8 ? kWarningColor : kOkColor;
+}
+
+void PartTracksView::paintConfidence(QPainter& p) const {
+  const FrameAxis a = axis();
+  const QRectF strip = confidenceStrip();
+  // One rectangle per run of frames of one colour, each frame up to the next one's x.
+  for (int f = 0; f < int(confidence_.size());) {
+    const QColor c = confidenceColor(f);
+    int end = f + 1;
+    while (end < int(confidence_.size()) && confidenceColor(end) == c) ++end;
+    p.fillRect(QRectF(QPointF(a.toX(f), strip.top()), QPointF(a.toX(end < a.frames ? end : end - 1), strip.bottom())), c);
+    f = end;
   }
 }
 
@@ -325,6 +352,7 @@ void PartTracksView::paintEvent(QPaintEvent*) {
     return;
   }
   paintSegments(p);
+  paintConfidence(p);
   paintStrip(p, positionPlot(), 0, 3, pos_lo_, pos_hi_, tr("position mm"));
   if (showsAngle()) paintStrip(p, anglePlot(), 3, 1, ang_lo_, ang_hi_, tr("angle °"));
   paintMarks(p);
@@ -350,11 +378,12 @@ QString PartTracksView::toolTipAt(double x) const {
     const auto& v = series_[size_t(frame)];
     if (std::isnan(v[0])) tip += tr("<br>not seen");
     else
-      tip += tr("<br>x %1, y %2, z %3 mm · %4° from the first rest")
+      tip += tr("<br>x %1, y %2, z %3 mm · %4° from the first rest · confidence %5%")
                  .arg(v[0], 0, 'f', 1)
                  .arg(v[1], 0, 'f', 1)
                  .arg(v[2], 0, 'f', 1)
-                 .arg(v[3], 0, 'f', 1);
+                 .arg(v[3], 0, 'f', 1)
+                 .arg(int(std::lround(confidence_[size_t(frame)] * 100)));
   }
   if (const int i = segmentAt(frame); i >= 0) {
     const auto& s = tracks_->segmentation.objects[size_t(row_)].segments[size_t(i)];
