@@ -9,6 +9,7 @@ std::vector<std::vector<Eigen::Vector3d>> box_faces(const Eigen::AlignedBox3d& b
       // (u, v, axis) is right-handed: corners in (u, v) order go counter-clockwise seen from
       // +axis, and are reversed for the face looking down -axis.
       const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      if (!(box.sizes()[u] > 0 && box.sizes()[v] > 0)) continue;
       std::vector<Eigen::Vector3d> face;
       for (const auto& [a, b] : {std::pair{0, 0}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
         Eigen::Vector3d corner;

@@ -2,6 +2,8 @@
 // outside (its normal by the right-hand rule points away from the box), one per side.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/geometry/box_faces.h"
 
 namespace demoplan {
@@ -31,6 +33,18 @@ TEST(BoxFaces, SixRectanglesEachCounterClockwiseSeenFromOutside) {
   // One face per side.
   for (size_t i = 0; i < normals.size(); ++i)
     for (size_t j = i + 1; j < normals.size(); ++j) EXPECT_LT(normals[i].dot(normals[j]), 0.5);
+}
+
+TEST(BoxFaces, AFlatBoxHasItsTopAndBottomOnly) {
+  const auto faces = box_faces(Eigen::AlignedBox3d(Eigen::Vector3d(-0.2, -0.15, 0.0), Eigen::Vector3d(0.2, 0.15, 0.0)));
+  ASSERT_EQ(faces.size(), 2u);
+  for (const auto& f : faces) {
+    const Eigen::Vector3d n = (f[1] - f[0]).cross(f[2] - f[1]);
+    EXPECT_NEAR(std::abs(n.normalized().z()), 1.0, 1e-12);
+  }
+  EXPECT_LT(((faces[0][1] - faces[0][0]).cross(faces[0][2] - faces[0][1])).z() *
+                ((faces[1][1] - faces[1][0]).cross(faces[1][2] - faces[1][1])).z(),
+            0.0);  // one looks up, the other down
 }
 
 }  // namespace

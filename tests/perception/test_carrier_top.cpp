@@ -36,6 +36,14 @@ TEST(CarrierTop, TheFaceThatLooksUpWhicheverWayTheBoxLies) {
   tilted.linear() = Eigen::AngleAxisd(15.0 * M_PI / 180, Eigen::Vector3d::UnitY()).toRotationMatrix();
   EXPECT_FALSE(carrier_top(tray, tilted));
   EXPECT_TRUE(carrier_top(tray, tilted, 20.0 * M_PI / 180));
+  // A tray given without thickness (a marker scene's box of height 0): its one face, up.
+  const Eigen::AlignedBox3d flat(Eigen::Vector3d(-0.2, -0.15, 0.0), Eigen::Vector3d(0.2, 0.15, 0.0));
+  for (const Pose& pose : {P, upside_down}) {
+    const auto top = carrier_top(flat, pose);
+    ASSERT_TRUE(top);
+    for (const auto& p : *top) EXPECT_NEAR(p.z(), 0.7, 1e-12);
+    EXPECT_GT((((*top)[1] - (*top)[0]).cross((*top)[2] - (*top)[1])).z(), 0);
+  }
 }
 
 }  // namespace
