@@ -107,7 +107,10 @@ private slots:
     QCOMPARE(view->row(), view->tracks()->tracks.object_index("YCBV_05"));
     tracks_->partList()->setCurrentIndex(view->tracks()->tracks.object_index("YCBV_02"));
     QCOMPARE(doc_->selectedObject(), 0);
-    QVERIFY(tracks_->summaryLabel()->text().startsWith(QStringLiteral("2 rests, 1 carry")));  // shelf_1: one carry each
+    // Where the tracks come from, then shelf_1's one carry each.
+    QVERIFY2(tracks_->summaryLabel()->text().startsWith(QStringLiteral("From the task's pose tracks: 2 rests, 1 carry")),
+             qPrintable(tracks_->summaryLabel()->text()));
+    QVERIFY(!doc_->trackDetection()->fromVideo());
     // The curves are there: x in red in the position strip, the angle in its own strip.
     const QImage shot = view->grab().toImage();
     QVERIFY(pixelsNear(shot, view->positionPlot().toRect(), kAxisColors[0]) > 50);

@@ -85,6 +85,7 @@ void PartTracksPanel::refreshSummary() {
   const int row = view_->row();
   if (!t || row < 0 || row >= int(t->segmentation.objects.size())) {
     summary_->clear();
+    summary_->setToolTip(QString());
     return;
   }
   const perception::ObjectSegmentation& o = t->segmentation.objects[size_t(row)];
@@ -112,6 +113,7 @@ void PartTracksPanel::refreshSummary() {
               .arg(kTrackRestColor.name(), objectColor(doc_->demonstration().object_index(t->tracks.object_ids[size_t(row)])).name(),
                    kDoubtColor.name(), kOkColor.name(), kWarningColor.name(), kErrorColor.name());
   summary_->setText(text);
+  summary_->setToolTip(text);  // the line is cut where the dock is narrow
 }
 
 }  // namespace demoplan::ui
