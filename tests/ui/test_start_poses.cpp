@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "perception/camera/camera_model.h"
+#include "perception/events/tracks_demonstration.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/synthetic_video.h"
 #include "perception/tracking/tracker_init.h"
@@ -203,6 +204,46 @@ private slots:
     QVERIFY(!outcome->ok);
     QVERIFY2(outcome->error.find("part 'TRAY' is not in the project's scene") != std::string::npos, outcome->error.c_str());
     QVERIFY2(outcome->error.find("init.json") != std::string::npos, outcome->error.c_str());
+  }
+
+  // Detection by the part models from the true start (init.json beside the marker scene): what
+  // the tracker measured stays for the Part Tracks panel, each frame with its confidence, named as
+  // the model tracker's, whether it found events in this short video or not.
+  void detectionByThePartModelsLeavesItsTracks() {
+    QVERIFY(QFile::copy(dir_.filePath(QStringLiteral("truth_init.json")), initFile()));
+    QVERIFY(doc_->detection()->modelTracker());  // the scene has no markers
+    std::optional<ExtractionOutcome> outcome;
+    connect(doc_->detection(), &EventDetection::done, this, [&](const ExtractionOutcome& o) { outcome = o; });
+    QVERIFY(doc_->detection()->start());
+    QVERIFY(test::waitFor([&] { return outcome.has_value(); }, 120000));
+    QVERIFY2(outcome->ok || outcome->error.find("Part Tracks") != std::string::npos, outcome->error.c_str());
+    qInfo("the model tracker: %s", outcome->ok ? qPrintable(QStringLiteral("%1 events").arg(outcome->demonstration.events.size()))
+                                               : outcome->error.c_str());
+    TrackDetection* measured = doc_->trackDetection();
+    QVERIFY(measured->fromVideo());
+    QVERIFY2(measured->source().contains(QStringLiteral("model tracker")), qPrintable(measured->source()));
+    const auto tracks = measured->tracks();
+    QVERIFY(tracks);
+    for (const perception::PartStart& part : truth_.parts) {
+      const int row = tracks->tracks.object_index(part.id);
+      QVERIFY2(row >= 0, part.id.c_str());
+      const perception::PoseSample& start = tracks->tracks.samples[size_t(row)][0];
+      QVERIFY2(start.valid && start.confidence > 0 && start.confidence <= 1, part.id.c_str());
+      // Where init.json starts it (up to the first frame's settling).
+      QVERIFY2((start.pose.translation() - part.world_T_object.translation()).norm() < 0.01, part.id.c_str());
+    }
+    // A detection that finds no event leaves its tracks too, and its message points to them.
+    ExtractionOutcome nothing = *outcome;
+    nothing.ok = true;
+    nothing.demonstration.events.clear();
+    doc_->trackDetection()->showVideoTracks(nullptr, {});
+    outcome.reset();
+    emit doc_->detection()->runner()->finished(nothing);
+    QVERIFY(outcome && !outcome->ok);
+    QVERIFY2(outcome->error.find("no grasp or release") != std::string::npos &&
+                 outcome->error.find("Part Tracks") != std::string::npos,
+             outcome->error.c_str());
+    QCOMPARE(measured->tracks().get(), nothing.tracks.get());
   }
 
   void onlyOnTheStartFrameWithThePartModels() {

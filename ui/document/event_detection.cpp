@@ -95,22 +95,21 @@ perception::TrackerInit EventDetection::modelTrackerStart(std::string* source) c
 }
 
 void EventDetection::onFinished(const ExtractionOutcome& o) {
+  // What the tracker measured, frame by frame, for the Part Tracks panel: also when it found no
+  // event, as the tracks then show why.
+  if (o.ok) doc_->trackDetection()->showVideoTracks(o.tracks, QString::fromStdString(o.tracker));
   if (o.ok && o.demonstration.events.empty()) {
     ExtractionOutcome none = o;
     none.ok = false;
-    none.error = "no grasp or release was found in the video";
+    none.error = "no grasp or release was found in the video (View > Part Tracks shows what the tracker measured)";
     emit done(none);
     return;
   }
+  // Measured rest poses float a few millimetres above or sink into their supports: put onto
+  // them, as the planner needs (the CLI's plan does the same with a measured --demo).
   if (o.ok)
-    // Measured rest poses float a few millimetres above or sink into their supports: put onto
-    // them, as the planner needs (the CLI's plan does the same with a measured --demo).
-  {
     doc_->replaceDemonstration(settle_on_supports(doc_->scene(), o.demonstration),
                                tr("Detect events in the video (%1 events)").arg(o.demonstration.events.size()));
-    // What the tracker measured, frame by frame, for the Part Tracks panel.
-    doc_->trackDetection()->showVideoTracks(o.tracks, QString::fromStdString(o.tracker));
-  }
   emit done(o);
 }
 
