@@ -109,9 +109,9 @@ void PartTracksPanel::refreshSummary() {
               .arg(o.noise.usable_frames);
   text += tr(" · <span style='color:%1'>▮</span> rest <span style='color:%2'>▮</span> carry "
              "<span style='color:%3'>▨</span> doubt · confidence <span style='color:%4'>▬</span> "
-             "<span style='color:%5'>▬</span> <span style='color:%6'>▬</span> not seen <span style='color:#cccccc'>▬</span>")
+             "<span style='color:%5'>▬</span> <span style='color:%6'>▬</span> not seen <span style='color:%7'>▬</span>")
               .arg(kTrackRestColor.name(), objectColor(doc_->demonstration().object_index(t->tracks.object_ids[size_t(row)])).name(),
-                   kDoubtColor.name(), kOkColor.name(), kWarningColor.name(), kErrorColor.name());
+                   kDoubtColor.name(), kOkColor.name(), kWarningColor.name(), kErrorColor.name(), kUnseenColor.name());
   summary_->setText(text);
   summary_->setToolTip(text);  // the line is cut where the dock is narrow
 }

@@ -23,6 +23,7 @@ namespace {
 
 constexpr double kBandTop = 3, kBandH = 16, kConfidenceH = 4, kStripGap = 8, kBottom = 6;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kSureFrame = 0.8;  // a frame's confidence from which it is drawn green
 const QColor kRestShade{kTrackRestColor.red(), kTrackRestColor.green(), kTrackRestColor.blue(), 50};
 
 // The range of a running median of `values` (NaN: unseen), and zero, the first rest: a few
@@ -239,8 +240,8 @@ void PartTracksView::paintSegments(QPainter& p) const {
 QColor PartTracksView::confidenceColor(int frame) const {
   if (frame < 0 || frame >= int(confidence_.size())) return {};
   const double c = confidence_[size_t(frame)];
-  if (std::isnan(c)) return QColor(0xcc, 0xcc, 0xcc);
-  return c < kLowConfidence ? kErrorColor : c < 0.8 ? kWarningColor : kOkColor;
+  if (std::isnan(c)) return kUnseenColor;
+  return c < kLowConfidence ? kErrorColor : c < kSureFrame ? kWarningColor : kOkColor;
 }
 
 void PartTracksView::paintConfidence(QPainter& p) const {

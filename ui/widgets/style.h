@@ -31,6 +31,8 @@ inline const QColor kDoubtColor = kWarningColor;
 inline const QColor kTrackRestColor{0x8f, 0xa8, 0xbf};
 // A part's rotation angle in its track.
 inline const QColor kTrackAngleColor{0x6a, 0x3d, 0x9a};
+// A frame in which the tracker did not see the part (the part tracks' confidence strip).
+inline const QColor kUnseenColor{0xcc, 0xcc, 0xcc};
 
 // "grasp" / "release"
 QString eventTypeName(EventType type);
