@@ -18,6 +18,7 @@
 #include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/marker_pose_tracker.h"
 #include "perception/tracking/model_pose_tracker.h"
+#include "perception/tracking/track_coverage.h"
 #include "perception/tracking/tracker_init.h"
 
 namespace demoplan::cli {
@@ -90,6 +91,12 @@ int run_extract(const ExtractCliOptions& o) {
   for (const auto& e : d.events)
     std::cerr << "  frame " << e.frame << "  " << (e.type == EventType::Grasp ? "grasp  " : "release") << "  "
               << d.object_ids[e.object] << "  confidence " << e.confidence << "\n";
+  // How much of each part's track the tracker measured, and where it did not see the part.
+  std::vector<perception::TrackCoverage> coverage;
+  for (size_t k = 0; k < r.raw.object_ids.size(); ++k) {
+    coverage.push_back(perception::track_coverage(r.raw.samples[k]));
+    std::cerr << "  " << r.raw.object_ids[k] << ": " << perception::describe_coverage(coverage.back()) << "\n";
+  }
   for (const auto& w : r.warnings) std::cerr << "  warning: " << w << "\n";
   for (const auto& i : issues) std::cerr << "  issue: " << i.message << "\n";
   std::cerr << "  wrote " << o.out << " and " << tracks << (o.overlay.empty() ? "" : " and " + o.overlay) << "\n";
@@ -100,6 +107,13 @@ int run_extract(const ExtractCliOptions& o) {
                         {"object", d.object_ids[e.object]},
                         {"type", e.type == EventType::Grasp ? "grasp" : "release"},
                         {"confidence", e.confidence}});
+    nlohmann::json seen = nlohmann::json::array();
+    for (size_t k = 0; k < coverage.size(); ++k)
+      seen.push_back({{"object", r.raw.object_ids[k]},
+                      {"frames", coverage[k].frames},
+                      {"seen", coverage[k].seen},
+                      {"unsure", coverage[k].unsure},
+                      {"unseen", coverage[k].unseen}});
     nlohmann::json iss = nlohmann::json::array();
     for (const auto& i : issues) iss.push_back(i.message);
     std::cout << nlohmann::json{{"video", o.video},
@@ -112,6 +126,7 @@ int run_extract(const ExtractCliOptions& o) {
                                 {"tracker", r.tracker},
                                 {"demonstration", o.out},
                                 {"tracks", tracks},
+                                {"coverage", seen},
                                 {"warnings", r.warnings},
                                 {"issues", iss}}
                      .dump()

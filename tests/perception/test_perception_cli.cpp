@@ -52,6 +52,12 @@ TEST(PerceptionCli, SynthExtractEvaluate) {
   EXPECT_EQ(je["events"].size(), 2u);
   EXPECT_GT(je["extraction_fps"].get<double>(), 0.0);
   EXPECT_TRUE(fs::exists(dir / "demo.tracks.json"));
+  // How much of each part's track was measured: a line per part, and in the JSON.
+  EXPECT_NE(e.err.find("  YCBV_02: seen in "), std::string::npos) << e.err;
+  ASSERT_EQ(je["coverage"].size(), 1u);
+  EXPECT_EQ(je["coverage"][0]["object"], "YCBV_02");
+  EXPECT_GT(je["coverage"][0]["seen"].get<int>(), je["frames"].get<int>() / 2);
+  EXPECT_LE(je["coverage"][0]["seen"].get<int>(), je["frames"].get<int>());
 
   const CliRun v = run("evaluate " + d + "/demo.json --truth " + d + "/truth.json --json");
   ASSERT_EQ(v.code, 0) << v.err;

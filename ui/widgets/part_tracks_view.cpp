@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "perception/events/tracks_demonstration.h"
+#include "perception/tracking/track_coverage.h"
 #include "plot/axis.h"
 #include "plot/painter_canvas.h"
 #include "plot/palette.h"
@@ -23,7 +24,6 @@ namespace {
 
 constexpr double kBandTop = 3, kBandH = 16, kConfidenceH = 4, kStripGap = 8, kBottom = 6;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kSureFrame = 0.8;  // a frame's confidence from which it is drawn green
 const QColor kRestShade{kTrackRestColor.red(), kTrackRestColor.green(), kTrackRestColor.blue(), 50};
 
 // The range of a running median of `values` (NaN: unseen), and zero, the first rest: a few
@@ -241,7 +241,7 @@ QColor PartTracksView::confidenceColor(int frame) const {
   if (frame < 0 || frame >= int(confidence_.size())) return {};
   const double c = confidence_[size_t(frame)];
   if (std::isnan(c)) return kUnseenColor;
-  return c < kLowConfidence ? kErrorColor : c < kSureFrame ? kWarningColor : kOkColor;
+  return c < kLowConfidence ? kErrorColor : c < perception::kSureConfidence ? kWarningColor : kOkColor;
 }
 
 void PartTracksView::paintConfidence(QPainter& p) const {

@@ -1,0 +1,29 @@
+#pragma once
+// How much of a part's track the tracker measured and how surely: the frames it saw the part in,
+// how many of those below a confidence, and the runs of frames it did not see it in. What
+// `extract` prints per part, as the GUI's Part Tracks strip draws it.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "perception/tracking/pose_track.h"
+
+namespace demoplan::perception {
+
+// A frame's confidence from which it counts as sure (below kLowConfidence it is low).
+inline constexpr double kSureConfidence = 0.8;
+
+struct TrackCoverage {
+  int frames = 0;  // of the track
+  int seen = 0;    // with an estimate
+  int unsure = 0;  // of those, below the confidence asked
+  std::vector<std::pair<int, int>> unseen;  // first and last frame of each run without an estimate
+};
+
+TrackCoverage track_coverage(const std::vector<PoseSample>& samples, double sure = kSureConfidence);
+
+// "seen in 106 of 150 frames, 9 of them below 0.8 confidence; not seen in frames 54-70, 74-91":
+// at most `runs` runs listed, then how many more.
+std::string describe_coverage(const TrackCoverage& c, double sure = kSureConfidence, size_t runs = 4);
+
+}  // namespace demoplan::perception
