@@ -8,9 +8,7 @@ namespace demoplan {
 
 Demonstration settle_on_supports(const Scene& scene, Demonstration d, const SettleOptions& options,
                                  const EventSupports& moving) {
-  std::vector<std::vector<Eigen::Vector3d>> furniture;
-  for (const auto& s : support_polygons(scene))
-    if (s.robot_link < 0) furniture.push_back(s.vertices);
+  const auto furniture = furniture_support_polygons(scene);
   // The demonstration's parts by id (an extraction lists them in its marker scene's order).
   std::vector<std::vector<std::vector<Eigen::Vector3d>>> faces(d.object_ids.size());
   for (size_t o = 0; o < d.object_ids.size(); ++o)

@@ -24,6 +24,13 @@ std::vector<SupportPolygon> support_polygons(const Scene& scene) {
   return out;
 }
 
+std::vector<std::vector<Eigen::Vector3d>> furniture_support_polygons(const Scene& scene) {
+  std::vector<std::vector<Eigen::Vector3d>> out;
+  for (const auto& s : support_polygons(scene))
+    if (s.robot_link < 0) out.push_back(s.vertices);
+  return out;
+}
+
 PolygonPlane polygon_plane(const std::vector<Eigen::Vector3d>& w) {
   PolygonPlane p;
   p.origin = w[0];

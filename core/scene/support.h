@@ -18,6 +18,8 @@ struct SupportPolygon {
 
 // Every furniture contact polygon (SRDF <contact>) and every robot contact polygon.
 std::vector<SupportPolygon> support_polygons(const Scene& scene);
+// The furniture's alone, as world polygons: where a measured rest is settled.
+std::vector<std::vector<Eigen::Vector3d>> furniture_support_polygons(const Scene& scene);
 
 // The benchmark's plane of a polygon: origin at its first vertex, normal the normalised cross
 // product of the pair of edge vectors from the first vertex with the largest cross product.

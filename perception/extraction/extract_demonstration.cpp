@@ -37,9 +37,7 @@ void check_rows(const PoseTracks& tracks, const PoseTracker& tracker) {
 // the parts on it would take that error over.
 EventSupports carrier_tops(const PoseTracks& tracks, const std::vector<TrackedPart>& parts, const Demonstration& d,
                            const Scene& scene, const SnapOptions& snap) {
-  std::vector<std::vector<Eigen::Vector3d>> furniture;
-  for (const auto& s : support_polygons(scene))
-    if (s.robot_link < 0) furniture.push_back(s.vertices);
+  const auto furniture = furniture_support_polygons(scene);
   EventSupports tops(d.events.size());
   for (size_t k = 0; k < parts.size() && k < tracks.samples.size(); ++k) {
     if (parts[k].planning) continue;

@@ -102,6 +102,26 @@ TEST(SupportedRests, AReleaseTwoMillimetresUpIsSettledPlannedAndValidated) {
   EXPECT_TRUE(report.valid()) << report.validation.message;
 }
 
+// The one pick with the block released standing on a tray whose top is at `tray`, and the line
+// of sight from `eye` to where it truly is.
+struct TrayRelease {
+  Demonstration demonstration;
+  Pose truth;
+  Eigen::Vector3d sight;
+};
+TrayRelease released_on_tray(const Scene& scene, double tray, const Eigen::Vector3d& eye) {
+  TrayRelease r{one_pick(scene, 0.0), Pose::Identity(), Eigen::Vector3d::Zero()};
+  r.demonstration.events[1].poses[0].translation().z() = tray + kHalfHeight + 0.001;
+  r.truth = r.demonstration.events[1].poses[0];
+  r.sight = (r.truth.translation() - eye).normalized();
+  return r;
+}
+
+// A square of side 2 `half` around (x, y) at height z, counter-clockwise from above.
+std::vector<Eigen::Vector3d> square(double x, double y, double half, double z) {
+  return {{x - half, y - half, z}, {x + half, y - half, z}, {x + half, y + half, z}, {x - half, y + half, z}};
+}
+
 // A part set on a tray the demonstrator holds (no furniture under it) is measured from its image
 // alone, its depth centimetres off: settled onto the tray's top given for that event, along its
 // line of sight, it rests where it was put; a tray its line of sight misses holds nothing.
@@ -110,15 +130,9 @@ TEST(SupportedRests, APartOnATrayIsSettledOntoItsTopAlongItsLineOfSight) {
   const Scene scene = build_cell_scene(table_cell(dir), {.data_dir = DEMOPLAN_DATA_DIR});
   const double tray = kTop + 0.3;  // held 30 cm above the table
   const Eigen::Vector3d eye(-1.0, 0.15, 2.0);
-  Demonstration d = one_pick(scene, 0.0);
+  auto [d, truth, sight] = released_on_tray(scene, tray, eye);
   Pose& released = d.events[1].poses[0];
-  released.translation().z() = tray + kHalfHeight + 0.001;
-  const Pose truth = released;
-  const Eigen::Vector3d sight = (truth.translation() - eye).normalized();
   released.translation() -= 0.05 * sight;  // seen 5 cm nearer
-  auto square = [](double x, double y, double half, double z) {
-    return std::vector<Eigen::Vector3d>{{x - half, y - half, z}, {x + half, y - half, z}, {x + half, y + half, z}, {x - half, y + half, z}};
-  };
   SettleOptions options;
   options.snap.viewpoint = eye;
   const EventSupports under(2, {square(0.45, 0.15, 0.15, tray)});
@@ -139,15 +153,11 @@ TEST(SupportedRests, APartOnATrayLyingOnTheTableIsSettledOntoTheNearerTop) {
   const Scene scene = build_cell_scene(table_cell(dir), {.data_dir = DEMOPLAN_DATA_DIR});
   const double tray = kTop + 0.001 + 0.015;  // a 15 mm tray on the table
   const Eigen::Vector3d eye(-1.0, 0.15, 2.0);
-  Demonstration d = one_pick(scene, 0.0);
-  Pose& released = d.events[1].poses[0];
-  released.translation().z() = tray + kHalfHeight + 0.001;
-  const Pose truth = released;
-  const Eigen::Vector3d sight = (truth.translation() - eye).normalized();
-  released.translation() += 0.006 / -sight.z() * sight;  // seen farther along its line of sight: 6 mm lower
+  auto [d, truth, sight] = released_on_tray(scene, tray, eye);
+  d.events[1].poses[0].translation() += 0.006 / -sight.z() * sight;  // seen farther along its line of sight: 6 mm lower
   SettleOptions options;
   options.snap.viewpoint = eye;
-  const EventSupports on_table(2, {{{0.3, 0.0, tray}, {0.6, 0.0, tray}, {0.6, 0.3, tray}, {0.3, 0.3, tray}}});
+  const EventSupports on_table(2, {square(0.45, 0.15, 0.15, tray)});
   EXPECT_LT((settle_on_supports(scene, d, options, on_table).events[1].poses[0].translation() - truth.translation()).norm(), 1e-3);
   // Without the tray, the table holds it.
   EXPECT_NEAR(settle_on_supports(scene, d, options).events[1].poses[0].translation().z(), kTop + kHalfHeight + 0.001, 1e-6);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/geometry/polygon_2d.h"
 #include "core/geometry/se3.h"
 #include "core/scene/support.h"
 #include "perception/camera/camera_model.h"
@@ -167,13 +168,13 @@ TEST_F(Extraction, APartPutOnATrayOnATableRestsOnTheSettledTray) {
   o.scene = marker_scene_world(load_marker_scene(out_.scene), out_.scene, DEMOPLAN_DATA_DIR);
   // The table: the largest furniture support.
   std::vector<Eigen::Vector3d> table;
-  auto area = [](const std::vector<Eigen::Vector3d>& p) {
-    Eigen::Vector3d a = Eigen::Vector3d::Zero();
-    for (size_t i = 0; i < p.size(); ++i) a += p[i].cross(p[(i + 1) % p.size()]);
-    return a.norm() / 2;
+  auto area = [](const std::vector<Eigen::Vector3d>& p) {  // (an upward face: its plan's area)
+    std::vector<Eigen::Vector2d> plan;
+    for (const auto& v : p) plan.push_back(v.head<2>());
+    return std::abs(polygon_area(plan));
   };
-  for (const auto& s : support_polygons(*o.scene))
-    if (s.robot_link < 0 && (table.empty() || area(s.vertices) > area(table))) table = s.vertices;
+  for (const auto& s : furniture_support_polygons(*o.scene))
+    if (table.empty() || area(s) > area(table)) table = s;
   ASSERT_FALSE(table.empty());
   Eigen::Vector3d middle = Eigen::Vector3d::Zero();
   for (const auto& v : table) middle += v / static_cast<double>(table.size());
