@@ -1,6 +1,5 @@
 #include "perception/tracking/track_error.h"
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
 

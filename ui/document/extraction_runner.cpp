@@ -73,8 +73,7 @@ bool ExtractionRunner::start(ExtractionJob job) {
         outcome->seconds = r.seconds;
         auto tracks = std::make_shared<perception::TracksDemonstration>();
         tracks->tracks = r.raw;
-        tracks->segmentation = perception::segment_tracks(r.raw);
-        tracks->demonstration = outcome->demonstration;
+        tracks->segmentation = perception::segment_tracks(r.raw);  // (the panel shows the document's demonstration)
         outcome->tracks = std::move(tracks);
         outcome->tracker = r.tracker;
         outcome->ok = true;
