@@ -159,7 +159,8 @@ Command register_extract_command(CLI::App& app) {
       ->check(CLI::IsMember({"markers", "model"}))
       ->capture_default_str();
   sub->add_option("--init", o->init,
-                  "with --tracker model: every part's pose in the first frame (demoplan-tracker-init JSON); "
+                  "with --tracker model: every part's pose in the first frame, and any corrections (parts placed again "
+                  "later; demoplan-tracker-init JSON); "
                   "default: init.json beside the scene");
   sub->add_option("--overlay", o->overlay,
                   "also write the video with each part's outline where its track puts it (green: seen, red: "

@@ -83,6 +83,16 @@ ModelPoseTracker::ModelPoseTracker(std::vector<ModelPart> parts, TrackerInit ini
     const Eigen::AlignedBox3f b = m.mesh.bounds();
     parts_.push_back({m.id, m.planning, Eigen::AlignedBox3d(b.min().cast<double>(), b.max().cast<double>())});
   }
+  for (size_t i = 0; i < init_.corrections.size(); ++i)
+    if (part_index(init_.corrections[i].id) < 0)
+      throw InputError(init_source_, "corrections[" + std::to_string(i) + "].id",
+                       "part '" + init_.corrections[i].id + "' is not tracked (not in the scene)");
+}
+
+int ModelPoseTracker::part_index(const std::string& id) const {
+  for (size_t k = 0; k < models_.size(); ++k)
+    if (models_[k].id == id) return static_cast<int>(k);
+  return -1;
 }
 
 ModelPoseTracker::~ModelPoseTracker() = default;
@@ -136,21 +146,27 @@ void ModelPoseTracker::start(const TrackingStart& start) {
     s.furniture_labels = cv::Mat(s.furniture_depth.size(), CV_8U, cv::Scalar(0));
     s.furniture_labels.setTo(OcclusionMap::kFurniture, s.furniture_depth < 1e9f);
   }
-  // A start that puts a part behind the camera or its centre beside the picture is a wrong
-  // placement, not a part to look for.
-  for (size_t k = 0; k < models_.size(); ++k) {
-    const PartStart& p = *init_.find(models_[k].id);
-    const Pose camera_T_part = s.world_T_camera.inverse() * p.world_T_object;
-    const std::string field = "parts[" + std::to_string(&p - init_.parts.data()) + "].world_T_object";
+  // A start (or a correction) that puts a part behind the camera or its centre beside the
+  // picture is a wrong placement, not a part to look for.
+  auto check_placement = [&](size_t k, const Pose& world_T_object, const std::string& field) {
+    const std::string& id = models_[k].id;
+    const Pose camera_T_part = s.world_T_camera.inverse() * world_T_object;
     if ((camera_T_part * contours_[k]->centre()).z() < 0.05)
-      throw InputError(init_source_, field, "puts part '" + p.id + "' behind the camera");
+      throw InputError(init_source_, field, "puts part '" + id + "' behind the camera");
     const Eigen::Vector2d at = centre_in_image(k, camera_T_part) + Eigen::Vector2d(s.intrinsics.cx, s.intrinsics.cy);
     if (at.x() < 0 || at.y() < 0 || at.x() >= s.image_size.width || at.y() >= s.image_size.height)
       throw InputError(init_source_, field,
-                       "puts part '" + p.id + "' outside the " + std::to_string(s.image_size.width) + "x" +
+                       "puts part '" + id + "' outside the " + std::to_string(s.image_size.width) + "x" +
                            std::to_string(s.image_size.height) + " image (its centre at pixel " +
                            std::to_string(static_cast<int>(at.x())) + ", " + std::to_string(static_cast<int>(at.y())) + ")");
+  };
+  for (size_t k = 0; k < models_.size(); ++k) {
+    const PartStart& p = *init_.find(models_[k].id);
+    check_placement(k, p.world_T_object, "parts[" + std::to_string(&p - init_.parts.data()) + "].world_T_object");
   }
+  for (size_t i = 0; i < init_.corrections.size(); ++i)
+    check_placement(static_cast<size_t>(part_index(init_.corrections[i].id)), init_.corrections[i].world_T_object,
+                    "corrections[" + std::to_string(i) + "].world_T_object");
   s.tracks.fps = start.fps;
   for (const auto& p : parts_) {
     s.tracks.object_ids.push_back(p.id);
@@ -249,6 +265,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
                                              static_cast<int>(k), options_.region).contrast;
     s.started = true;
   }
+  const std::vector<size_t> corrected = apply_corrections(frame, image);
   const OcclusionMap map = occlusion_map();
   cv::Mat gray;
   cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
@@ -391,7 +408,9 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       return (centre_in_image(k, T) - centre_in_image(k, s.camera_T_part[k])).norm() >
              contours_[k]->radius() * s.intrinsics.fx / c.z();
     };
-    if (!is_seen(r)) {
+    // Placed by the operator in this frame: not looked for elsewhere.
+    const bool placed = std::find(corrected.begin(), corrected.end(), k) != corrected.end();
+    if (!is_seen(r) && !placed) {
       // Not farther than its radius from a rest it was seen at in the last frame: a part taken
       // from rest has not got that far yet, and what the search finds there is what passed in
       // front of it (waiter_0: the sugar box carried past the cracker box, taken for it 30 cm off).
@@ -413,7 +432,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     // (Every `rest_search_every` frames while it stays lost, and in the frame after a find:
     // a part lost for long costs less.)
     const bool rest_search_now = s.rest_find[k] || s.unseen[k] % std::max(options_.rest_search_every, 1) == 0;
-    if (!is_seen(r) && options_.rest_search && !s.supports.empty() && rest_search_now) {
+    if (!is_seen(r) && !placed && options_.rest_search && !s.supports.empty() && rest_search_now) {
       const std::optional<RegionFrameResult> found = rest_search(image, part);
       if (found && s.rest_find[k]) {
         const Eigen::Vector3d moved = found->camera_T_part * contours_[k]->centre() - *s.rest_find[k] * contours_[k]->centre();
@@ -489,6 +508,25 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     // Come to rest (three frames still): the frames before may show it there already.
     if (options_.date_rests_back && resting[k] && !s.was_resting[k]) date_rest_back(k, frame, bar);
   }
+  // A part placed again is where the operator put it in this frame, measured or not; the frames
+  // before, since it was lost, may show it there already.
+  for (const size_t k : corrected) {
+    PoseSample& sample = s.tracks.samples[k][frame];
+    if (!sample.valid) {
+      sample.valid = true;
+      sample.pose = s.world_T_camera * s.camera_T_part[k];
+      sample.confidence = 1.0;
+      seen.push_back({static_cast<int>(k), sample});
+    }
+    // At the rest first (a part put down some frames before, the hand still near it), then,
+    // from the earliest frame that shows it there, back into its carry.
+    const double bar = std::max(options_.lost_contrast, options_.relative_contrast * s.reference_contrast[k]);
+    date_rest_back(k, frame, bar, 1);
+    int first = frame;
+    while (first > 0 && s.tracks.samples[k][first - 1].valid && s.tracks.samples[k][first - 1].pose.isApprox(sample.pose))
+      --first;
+    follow_back(k, first, bar);
+  }
   // The last frames, kept a while: where a part comes to rest shows how it got there (while a
   // part is missed: follow_back; while one comes to rest: date_rest_back).
   s.was_resting = resting;
@@ -505,6 +543,42 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], after, static_cast<int>(k), s.colors[k],
                    options_.region, learn_part[k]);
   return seen;
+}
+
+std::vector<size_t> ModelPoseTracker::apply_corrections(int frame, const cv::Mat& image) {
+  State& s = *state_;
+  std::vector<size_t> corrected;
+  for (const PartCorrection& c : init_.corrections) {
+    if (c.frame != frame) continue;
+    const auto k = static_cast<size_t>(part_index(c.id));
+    s.camera_T_part[k] = s.world_T_camera.inverse() * c.world_T_object;
+    // At rest where it was put, as at the start: nothing of its last motion, rest or ride goes on.
+    s.centres[k].assign(3, centre_in_image(k, s.camera_T_part[k]));
+    s.previous[k].reset();
+    s.seen_last[k] = true;
+    s.was_resting[k] = true;
+    s.unseen[k] = 0;
+    s.moved_for[k] = 0;
+    s.rest_find[k].reset();
+    s.holds[k] = RestHold();
+    s.rides[k].reset();
+    s.rest_rotation[k] = c.world_T_object.linear();
+    s.rest_world[k] = c.world_T_object;
+    s.left_rest[k] = -1;
+    corrected.push_back(k);
+  }
+  if (corrected.empty()) return corrected;
+  // Its colours learnt there too (what the tracker knew of it may be why it was lost), and how
+  // well it stands out there as its bar from now on.
+  const OcclusionMap map = occlusion_map();
+  for (const size_t k : corrected) {
+    const int part = static_cast<int>(k);
+    learn_colors(image, s.intrinsics, *contours_[k], s.camera_T_part[k], map, part, s.colors[k], options_.region);
+    s.reference_contrast[k] = track_region(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map, part,
+                                           options_.region, true).contrast;
+    s.measured_at[k] = frame - 1;
+  }
+  return corrected;
 }
 
 void ModelPoseTracker::follow_back(size_t k, int frame, double bar) {
@@ -527,14 +601,14 @@ void ModelPoseTracker::follow_back(size_t k, int frame, double bar) {
   }
 }
 
-void ModelPoseTracker::date_rest_back(size_t k, int frame, double bar) {
+void ModelPoseTracker::date_rest_back(size_t k, int frame, double bar, int seen_for) {
   State& s = *state_;
-  // Its rest is seen over the last three frames; the ones before are asked, latest first.
+  // Its rest is seen over the last `seen_for` frames; the ones before are asked, latest first.
   const OcclusionMap map = occlusion_map();
   for (auto it = s.recent.rbegin(); it != s.recent.rend(); ++it) {
     const int f = it->first;
-    if (f > frame - 3) continue;
-    if (f < frame - options_.date_rests_back_frames - 2) break;
+    if (f > frame - seen_for) continue;
+    if (f < frame - options_.date_rests_back_frames - seen_for + 1) break;
     // At the rest's depth, from the rest pose: it stays there (within the rest hold) if it was there.
     const RegionFrameResult r = track_region(it->second, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
                                              static_cast<int>(k), options_.region, true);

@@ -187,8 +187,9 @@ struct ModelTrackerOptions {
 class ModelPoseTracker final : public PoseTracker {
 public:
   // `furniture`: what may hide the parts (its contour lines there are left out). Throws
-  // InputError when `init` lacks a part's pose (naming the part); start() throws it when a start
-  // puts a part behind the camera or its centre outside the image.
+  // InputError when `init` lacks a part's pose (naming the part) or corrects a part it does not
+  // track; start() throws it when a start or a correction puts a part behind the camera or its
+  // centre outside the image.
   ModelPoseTracker(std::vector<ModelPart> parts, TrackerInit init, std::string init_source,
                    std::vector<FurnitureMesh> furniture = {}, const ModelTrackerOptions& options = {});
   ~ModelPoseTracker() override;
@@ -245,12 +246,17 @@ private:
   // Each part as a ride's detection sees it in `frame` (ride_prediction.h): tracked when measured in it or the last.
   std::vector<RidePart> ride_parts(int frame) const;
   RideRules ride_rules() const;
+  // The operator's corrections for `frame` (TrackerInit::corrections): each part placed again is
+  // taken from there as from a start, at rest, its colours learnt there too. Returns the parts.
+  std::vector<size_t> apply_corrections(int frame, const cv::Mat& image);
+  // Part k's index among the models, or -1.
+  int part_index(const std::string& id) const;
   // Part k, found at rest in `frame`, tracked back from there through the kept frames before it
   // while it is seen (contrast `bar`), filling its samples there.
   void follow_back(size_t k, int frame, double bar);
-  // Part k, come to rest in `frame`: the kept frames before its three still ones reported at
-  // the rest while they show it there (date_rests_back).
-  void date_rest_back(size_t k, int frame, double bar);
+  // Part k, come to rest in `frame`: the kept frames before its `seen_for` still ones (three;
+  // one for a part placed again) reported at the rest while they show it there (date_rests_back).
+  void date_rest_back(size_t k, int frame, double bar, int seen_for = 3);
 
   std::vector<ModelPart> models_;
   std::vector<FurnitureMesh> furniture_;

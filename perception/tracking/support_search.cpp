@@ -4,13 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "core/geometry/polygon_2d.h"
+
 namespace demoplan::perception {
-
-namespace {
-
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-}  // namespace
 
 bool SupportLevel::holds(const Eigen::Vector2d& xy) const {
   if (!bounds.contains(xy)) return false;

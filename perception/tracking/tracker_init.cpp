@@ -1,6 +1,7 @@
 #include "perception/tracking/tracker_init.h"
 
 #include <set>
+#include <utility>
 
 #include "core/io/json_file.h"
 #include "perception/io/pose_json.h"
@@ -34,13 +35,36 @@ TrackerInit load_tracker_init(const std::string& path) {
     p.world_T_object = pose_from_json(parts[i]["world_T_object"]);
     init.parts.push_back(p);
   }
+  if (root.has("corrections")) {
+    const JsonField corrections = root["corrections"];
+    std::set<std::pair<std::string, int>> placed;
+    for (size_t i = 0; i < corrections.size(); ++i) {
+      PartCorrection c;
+      c.id = corrections[i]["id"].string();
+      if (!init.find(c.id)) corrections[i]["id"].fail("part '" + c.id + "' has no start in \"parts\"");
+      c.frame = corrections[i]["frame"].integer();
+      if (c.frame <= init.frame)
+        corrections[i]["frame"].fail("must be after the start frame (" + std::to_string(init.frame) + ")");
+      if (!placed.insert({c.id, c.frame}).second)
+        corrections[i]["frame"].fail("part '" + c.id + "' is placed twice in frame " + std::to_string(c.frame));
+      c.world_T_object = pose_from_json(corrections[i]["world_T_object"]);
+      init.corrections.push_back(c);
+    }
+  }
   return init;
 }
 
 void save_tracker_init(const std::string& path, const TrackerInit& init) {
   Json parts = Json::array();
   for (const auto& p : init.parts) parts.push_back({{"id", p.id}, {"world_T_object", pose_to_json(p.world_T_object)}});
-  write_json_file_atomic(path, {{"format", kFormat}, {"version", kVersion}, {"frame", init.frame}, {"parts", parts}});
+  Json file = {{"format", kFormat}, {"version", kVersion}, {"frame", init.frame}, {"parts", parts}};
+  if (!init.corrections.empty()) {
+    Json corrections = Json::array();
+    for (const auto& c : init.corrections)
+      corrections.push_back({{"id", c.id}, {"frame", c.frame}, {"world_T_object", pose_to_json(c.world_T_object)}});
+    file["corrections"] = corrections;
+  }
+  write_json_file_atomic(path, file);
 }
 
 }  // namespace demoplan::perception

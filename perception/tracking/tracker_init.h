@@ -4,8 +4,11 @@
 //
 // File "demoplan-tracker-init" version 1 (JSON):
 //   {"format": "demoplan-tracker-init", "version": 1, "frame": 0,
-//    "parts": [{"id": "YCBV_02", "world_T_object": {"t": [x, y, z], "q": [qx, qy, qz, qw]}}]}
+//    "parts": [{"id": "YCBV_02", "world_T_object": {"t": [x, y, z], "q": [qx, qy, qz, qw]}}],
+//    "corrections": [{"id": "YCBV_02", "frame": 75, "world_T_object": {...}}]}
 // Poses in metres in the world frame of the camera file (the same as the scene's).
+// `corrections` (optional): where the operator placed a part again later in the video, after
+// the tracker lost it or followed it wrongly; the tracker takes it from there as from a start.
 #include <string>
 #include <vector>
 
@@ -18,14 +21,23 @@ struct PartStart {
   Pose world_T_object = Pose::Identity();
 };
 
+// A part placed again at a later frame (an operator's correction).
+struct PartCorrection {
+  std::string id;
+  int frame = 0;
+  Pose world_T_object = Pose::Identity();
+};
+
 struct TrackerInit {
   int frame = 0;
   std::vector<PartStart> parts;
+  std::vector<PartCorrection> corrections;  // in the file's order
 
   const PartStart* find(const std::string& id) const;
 };
 
-// Throws InputError naming the file and field: malformed poses, duplicate ids, a negative frame.
+// Throws InputError naming the file and field: malformed poses, duplicate ids, a negative frame,
+// a correction of a part without a start, at or before the start frame, or given twice.
 TrackerInit load_tracker_init(const std::string& path);
 void save_tracker_init(const std::string& path, const TrackerInit& init);
 

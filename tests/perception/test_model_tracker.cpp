@@ -253,6 +253,42 @@ TEST(TrackerInit, RoundTripsAndNamesWhatIsWrong) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("YCBV_05"), std::string::npos) << e.what();
   }
+
+  // The operator's corrections: read back in their order; wrong ones named by their field.
+  init.corrections.push_back({"YCBV_02", 40, p});
+  init.corrections.push_back({"YCBV_02", 7, Pose::Identity()});
+  save_tracker_init((dir / "corrected.json").string(), init);
+  const TrackerInit corrected = load_tracker_init((dir / "corrected.json").string());
+  ASSERT_EQ(corrected.corrections.size(), 2u);
+  EXPECT_EQ(corrected.corrections[0].id, "YCBV_02");
+  EXPECT_EQ(corrected.corrections[0].frame, 40);
+  EXPECT_TRUE(corrected.corrections[0].world_T_object.isApprox(p, 1e-12));
+  EXPECT_EQ(corrected.corrections[1].frame, 7);
+  const std::string pose = R"("world_T_object": {"t": [0, 0, 0], "q": [0, 0, 0, 1]})";
+  const std::string start = R"({"format": "demoplan-tracker-init", "version": 1, "frame": 5, "parts": [{"id": "A", )" + pose + "}], ";
+  for (const auto& [corrections, field] : std::vector<std::pair<std::string, std::string>>{
+           {R"([{"id": "B", "frame": 9, )" + pose + "}]", "corrections[0].id"},
+           {R"([{"id": "A", "frame": 5, )" + pose + "}]", "corrections[0].frame"},
+           {R"([{"id": "A", "frame": 9, )" + pose + R"(}, {"id": "A", "frame": 9, )" + pose + "}]", "corrections[1].frame"},
+           {R"([{"id": "A", "frame": 9, "world_T_object": {"t": [0, 0]}}])", "corrections[0].world_T_object"}}) {
+    std::ofstream((dir / "bad.json").string()) << start << R"("corrections": )" << corrections << "}";
+    try {
+      load_tracker_init((dir / "bad.json").string());
+      ADD_FAILURE() << "accepted: " << corrections;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  }
+  // A correction of a part the scene does not track.
+  TrackerInit stray = back;
+  stray.parts.push_back({"YCBV_05", p});
+  stray.corrections.push_back({"YCBV_05", 9, p});
+  try {
+    ModelPoseTracker tracker({{"YCBV_02", true, box_mesh(kBox, {0, 0, 255})}}, stray, "init.json");
+    FAIL() << "a correction of a part not tracked was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("corrections[0].id"), std::string::npos) << e.what();
+  }
   fs::remove_all(dir);
 }
 
@@ -481,6 +517,42 @@ TEST(ModelTracker, FindsAPartAgainAfterTenFramesFullyHidden) {
     ASSERT_TRUE(tracks.samples[0][f].valid) << "frame " << f;
     EXPECT_LT(error_mm(tracks.samples[0][f], truth[f]), 5.0) << "frame " << f;
   }
+}
+
+// Carried 34 cm across and 10 cm away while a board hides it, farther than any search looks:
+// lost for good, until the operator places it again (a correction in frame 25). From there it
+// is tracked where it is, and the frames since the board left, which show it there already,
+// are reported there too.
+TEST(ModelTracker, APartPlacedAgainByTheOperatorIsTrackedFromThere) {
+  std::vector<Pose> truth;
+  std::vector<bool> covered;
+  for (int f = 0; f < 36; ++f) {
+    const double moved = std::clamp((f - 10) / 9.0, 0.0, 1.0);
+    truth.push_back(box_pose(-0.17 + 0.34 * moved, 0.0, 0.9 + 0.1 * moved));
+    covered.push_back(f >= 10 && f < 20);
+  }
+  const Clip clip = render_clip(truth, covered);
+  auto track = [&](const std::vector<PartCorrection>& corrections) {
+    TrackerInit init;
+    init.parts.push_back({"box", truth[0]});
+    init.corrections = corrections;
+    ModelTrackerOptions o;
+    o.contour.views = 300;
+    ModelPoseTracker tracker({{"box", true, box_mesh(kBox, {40, 40, 200})}}, init, "init.json", {}, o);
+    tracker.start({clip.camera(), 30.0, static_cast<int>(clip.frames.size())});
+    for (size_t f = 0; f < clip.frames.size(); ++f) tracker.track(static_cast<int>(f), clip.frames[f]);
+    return tracker.finish();
+  };
+  const PoseTracks lost = track({});
+  for (int f = 20; f < 36; ++f)
+    EXPECT_TRUE(!lost.samples[0][f].valid || error_mm(lost.samples[0][f], truth[f]) > 20.0)
+        << "frame " << f << ": found without the correction (the test needs a part lost for good)";
+  const PoseTracks placed = track({{"box", 25, truth[25]}});
+  for (int f = 20; f < 36; ++f) {
+    ASSERT_TRUE(placed.samples[0][f].valid) << "frame " << f;
+    EXPECT_LT(error_mm(placed.samples[0][f], truth[f]), 5.0) << "frame " << f;
+  }
+  for (int f = 10; f < 19; ++f) EXPECT_FALSE(placed.samples[0][f].valid) << "frame " << f << " was seen under the board";
 }
 
 // Carried out of the picture and brought back in (30 frames out): not reported while out,
