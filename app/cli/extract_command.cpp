@@ -25,6 +25,9 @@ namespace demoplan::cli {
 
 namespace {
 
+// A part lost for good for at least this many frames gets a line on how to place it again.
+constexpr int kLostHintFrames = 10;
+
 struct ExtractCliOptions {
   std::string video, camera, scene, detections, hands, out, events = "thresholds";
   std::string tracker = "markers", init, data_dir, overlay;
@@ -59,9 +62,10 @@ int run_extract(const ExtractCliOptions& o) {
   options.camera_source = camera_path;
   options.scene = perception::marker_scene_world(scene, o.scene, o.data_dir);  // rests put onto its supports
   std::unique_ptr<perception::PoseTracker> tracker;
+  std::string init;  // the model tracker's start file
   if (o.tracker == "model") {
     // The parts' poses in the first frame: --init, else init.json beside the scene.
-    std::string init = o.init;
+    init = o.init;
     if (init.empty()) init = (std::filesystem::path(o.scene).parent_path() / "init.json").string();
     if (!std::filesystem::is_regular_file(init))
       throw InputError(init, "", "the model tracker needs every part's pose in the first frame: no such file (use --init)");
@@ -96,6 +100,11 @@ int run_extract(const ExtractCliOptions& o) {
   for (size_t k = 0; k < r.raw.object_ids.size(); ++k) {
     coverage.push_back(perception::track_coverage(r.raw.samples[k]));
     std::cerr << "  " << r.raw.object_ids[k] << ": " << perception::describe_coverage(coverage.back()) << "\n";
+    // Lost for good by the model tracker: the operator can place it again where the video shows it.
+    if (const int lost = coverage.back().lost_from(); lost > 0 && !init.empty() && r.frames - lost >= kLostHintFrames)
+      std::cerr << "  " << r.raw.object_ids[k] << ": lost from frame " << lost
+                << " on; where a later frame shows it, place it again there in " << init
+                << "'s \"corrections\" and extract again (docs/perception.md)\n";
   }
   for (const auto& w : r.warnings) std::cerr << "  warning: " << w << "\n";
   for (const auto& i : issues) std::cerr << "  issue: " << i.message << "\n";

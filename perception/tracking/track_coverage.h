@@ -18,12 +18,16 @@ struct TrackCoverage {
   int seen = 0;    // with an estimate
   int unsure = 0;  // of those, below the confidence asked
   std::vector<std::pair<int, int>> unseen;  // first and last frame of each run without an estimate
+
+  // The first frame of the run not seen that lasts to the track's end (lost for good), or -1.
+  int lost_from() const { return !unseen.empty() && unseen.back().second == frames - 1 ? unseen.back().first : -1; }
 };
 
 TrackCoverage track_coverage(const std::vector<PoseSample>& samples, double sure = kSureConfidence);
 
 // "seen in 106 of 150 frames, 9 of them below 0.8 confidence; not seen in frames 54-70, 74-91":
-// at most `runs` runs listed, then how many more.
+// at most `runs` runs listed, then how many more; a last run that lasts to the end is always
+// listed (where a part was lost for good matters most).
 std::string describe_coverage(const TrackCoverage& c, double sure = kSureConfidence, size_t runs = 4);
 
 }  // namespace demoplan::perception

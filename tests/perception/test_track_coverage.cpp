@@ -33,6 +33,16 @@ TEST(TrackCoverage, CountsTheFramesSeenAndTheRunsNotSeen) {
   EXPECT_NE(describe_coverage(c, kSureConfidence, 1).find("and 2 more runs"), std::string::npos);
 }
 
+TEST(TrackCoverage, APartLostForGoodIsListedWhereItWasLostThoughTheListIsCut) {
+  const TrackCoverage c = track_coverage(track("#.#.#.#.#...."));
+  EXPECT_EQ(c.lost_from(), 9);
+  EXPECT_EQ(describe_coverage(c, kSureConfidence, 3), "seen in 5 of 13 frames; not seen in frames 1, 3, 2 more runs and 9-12");
+  EXPECT_EQ(describe_coverage(c, kSureConfidence, 5), "seen in 5 of 13 frames; not seen in frames 1, 3, 5, 7, 9-12");
+  EXPECT_EQ(track_coverage(track("#.#")).lost_from(), -1);
+  EXPECT_EQ(track_coverage(track("##.")).lost_from(), 2);
+  EXPECT_EQ(track_coverage(track("...")).lost_from(), 0);
+}
+
 TEST(TrackCoverage, AFullySeenTrackSaysSoAlone) {
   const TrackCoverage c = track_coverage(track("#####"));
   EXPECT_TRUE(c.unseen.empty());
