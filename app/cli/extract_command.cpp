@@ -25,9 +25,6 @@ namespace demoplan::cli {
 
 namespace {
 
-// A part lost for good for at least this many frames gets a line on how to place it again.
-constexpr int kLostHintFrames = 10;
-
 struct ExtractCliOptions {
   std::string video, camera, scene, detections, hands, out, events = "thresholds";
   std::string tracker = "markers", init, data_dir, overlay;
@@ -101,7 +98,7 @@ int run_extract(const ExtractCliOptions& o) {
     coverage.push_back(perception::track_coverage(r.raw.samples[k]));
     std::cerr << "  " << r.raw.object_ids[k] << ": " << perception::describe_coverage(coverage.back()) << "\n";
     // Lost for good by the model tracker: the operator can place it again where the video shows it.
-    if (const int lost = coverage.back().lost_from(); lost > 0 && !init.empty() && r.frames - lost >= kLostHintFrames)
+    if (const int lost = coverage.back().lost_for_good_from(); lost > 0 && !init.empty())
       std::cerr << "  " << r.raw.object_ids[k] << ": lost from frame " << lost
                 << " on; where a later frame shows it, place it again there in " << init
                 << "'s \"corrections\" and extract again (docs/perception.md)\n";

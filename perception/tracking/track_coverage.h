@@ -12,6 +12,9 @@ namespace demoplan::perception {
 
 // A frame's confidence from which it counts as sure (below kLowConfidence it is low).
 inline constexpr double kSureConfidence = 0.8;
+// A part not seen in the last this many frames or more is lost for good: `extract` and the Part
+// Tracks panel point it out (the operator can place it again: tracker_init.h's corrections).
+inline constexpr int kLostForGoodFrames = 10;
 
 struct TrackCoverage {
   int frames = 0;  // of the track
@@ -19,8 +22,13 @@ struct TrackCoverage {
   int unsure = 0;  // of those, below the confidence asked
   std::vector<std::pair<int, int>> unseen;  // first and last frame of each run without an estimate
 
-  // The first frame of the run not seen that lasts to the track's end (lost for good), or -1.
+  // The first frame of the run not seen that lasts to the track's end, or -1.
   int lost_from() const { return !unseen.empty() && unseen.back().second == frames - 1 ? unseen.back().first : -1; }
+  // That frame when the part was seen before it and the run is kLostForGoodFrames long or more, or -1.
+  int lost_for_good_from() const {
+    const int f = lost_from();
+    return f > 0 && frames - f >= kLostForGoodFrames ? f : -1;
+  }
 };
 
 TrackCoverage track_coverage(const std::vector<PoseSample>& samples, double sure = kSureConfidence);

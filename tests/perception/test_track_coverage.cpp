@@ -41,6 +41,10 @@ TEST(TrackCoverage, APartLostForGoodIsListedWhereItWasLostThoughTheListIsCut) {
   EXPECT_EQ(track_coverage(track("#.#")).lost_from(), -1);
   EXPECT_EQ(track_coverage(track("##.")).lost_from(), 2);
   EXPECT_EQ(track_coverage(track("...")).lost_from(), 0);
+  // For good: seen before, and not for kLostForGoodFrames frames or more.
+  EXPECT_EQ(track_coverage(track("##" + std::string(kLostForGoodFrames, '.'))).lost_for_good_from(), 2);
+  EXPECT_EQ(track_coverage(track("##" + std::string(kLostForGoodFrames - 1, '.'))).lost_for_good_from(), -1);
+  EXPECT_EQ(track_coverage(track(std::string(kLostForGoodFrames, '.'))).lost_for_good_from(), -1);
 }
 
 TEST(TrackCoverage, AFullySeenTrackSaysSoAlone) {

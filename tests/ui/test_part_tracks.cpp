@@ -11,6 +11,7 @@
 
 #include "core/project/project.h"
 #include "perception/events/tracks_demonstration.h"
+#include "perception/tracking/track_coverage.h"
 #include "ui/document/document.h"
 #include "ui/widgets/part_tracks_panel.h"
 #include "ui/widgets/part_tracks_view.h"
@@ -126,6 +127,28 @@ private slots:
       const auto kind = view->tracks()->segmentation.objects[size_t(row)].segments[size_t(after)].kind;
       QVERIFY2(kind != perception::SegmentKind::Rest, qPrintable(QString::number(e.frame)));
     }
+  }
+
+  // Tracks from the video's model tracker that lose a part for good: the summary says from
+  // which frame, and its tooltip how to place the part again; the marker tracker's do not.
+  void aPartTheModelTrackerLostForGoodIsPointedOut() {
+    QCOMPARE(doc_->trackDetection()->detect(), 4);
+    auto lost = std::make_shared<perception::TracksDemonstration>(*tracks_->view()->tracks());
+    const int row = lost->tracks.object_index("YCBV_02");
+    QVERIFY(row >= 0);
+    auto& samples = lost->tracks.samples[size_t(row)];
+    const int from = int(samples.size()) - perception::kLostForGoodFrames - 2;
+    for (size_t f = size_t(from); f < samples.size(); ++f) samples[f].valid = false;
+    doc_->selectObject(0);
+    doc_->trackDetection()->showVideoTracks(lost, QStringLiteral("model"));
+    QCOMPARE(tracks_->view()->row(), row);
+    const QString text = tracks_->summaryLabel()->text();
+    QVERIFY2(text.startsWith(QStringLiteral("From the video (model tracker)")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("lost from frame %1 on").arg(from)), qPrintable(text));
+    QVERIFY2(tracks_->summaryLabel()->toolTip().contains(QStringLiteral("corrections")), qPrintable(tracks_->summaryLabel()->toolTip()));
+    QVERIFY(window_->grab().save(test::artifactDir() + QStringLiteral("/part_tracks_lost.png")));
+    doc_->trackDetection()->showVideoTracks(lost, QStringLiteral("markers"));
+    QVERIFY2(!tracks_->summaryLabel()->text().contains(QStringLiteral("lost from")), qPrintable(tracks_->summaryLabel()->text()));
   }
 
   void clickOnThePanelMovesThePlayheadToThatFrame() {

@@ -37,6 +37,7 @@ void TrackDetection::showVideoTracks(std::shared_ptr<const perception::TracksDem
   tracks_ = std::move(tracks);
   error_.clear();
   from_video_ = tracks_ != nullptr;
+  tracker_ = from_video_ ? tracker : QString();
   source_ = from_video_ ? tr("from the video (%1 tracker)").arg(tracker == QLatin1String("markers") ? tr("marker") : tracker)
                        : QString();
   emit tracksChanged();
@@ -63,6 +64,7 @@ void TrackDetection::setTracks(std::shared_ptr<const perception::TracksDemonstra
   tracks_ = std::move(tracks);
   error_.clear();
   from_video_ = false;
+  tracker_.clear();
   source_ = tracks_ ? tr("from the task's pose tracks") : QString();
   emit tracksChanged();
 }

@@ -37,6 +37,8 @@ public:
   // Where the tracks come from, for the panel: the video's tracker (markers, model) or the task.
   QString source() const { return source_; }
   bool fromVideo() const { return from_video_; }
+  // The video's tracker ("markers", "model"); empty for the task's tracks.
+  QString tracker() const { return tracker_; }
   // The tracks a detection in the video measured (`tracker` names the tracker).
   void showVideoTracks(std::shared_ptr<const perception::TracksDemonstration> tracks, const QString& tracker);
 
@@ -51,6 +53,7 @@ private:
   QString error_;
   QString source_;
   bool from_video_ = false;
+  QString tracker_;
 };
 
 }  // namespace demoplan::ui

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "perception/events/tracks_demonstration.h"
+#include "perception/tracking/track_coverage.h"
 #include "ui/widgets/part_tracks_view.h"
 #include "ui/widgets/style.h"
 
@@ -95,13 +96,22 @@ void PartTracksPanel::refreshSummary() {
     carries += s.kind == perception::SegmentKind::Carry;
     rides += s.kind == perception::SegmentKind::Ride;
   }
-  // The noise decides how wide a rest is: worth seeing next to the curves.
   auto count = [](int n, const QString& one, const QString& many) { return QString::number(n) + " " + (n == 1 ? one : many); };
   QString text = doc_->trackDetection()->source();
   if (!text.isEmpty()) text[0] = text[0].toUpper();
   text += (text.isEmpty() ? QString() : QStringLiteral(": ")) + count(rests, tr("rest"), tr("rests")) + ", " +
           count(carries, tr("carry"), tr("carries"));
   if (rides > 0) text += ", " + count(rides, tr("ride"), tr("rides"));
+  // Lost for good by the model tracker (first, where the narrow dock does not cut it off): from
+  // which frame, and how the operator brings it back.
+  QString tip;
+  if (doc_->trackDetection()->tracker() == QLatin1String("model") && size_t(row) < t->tracks.samples.size())
+    if (const int lost = perception::track_coverage(t->tracks.samples[size_t(row)]).lost_for_good_from(); lost > 0) {
+      text += tr(" · <span style='color:%1'>lost from frame %2 on</span>").arg(kErrorColor.name()).arg(lost);
+      tip = tr("<br>Where a later frame shows it, place it again there in the \"corrections\" of init.json beside "
+               "the marker scene and detect again (docs/perception.md).");
+    }
+  // The noise decides how wide a rest is: worth seeing next to the curves.
   text += tr(" · noise σ %1–%2 mm, %3° · %4 usable frames")
               .arg(o.noise.sigma_min * 1000, 0, 'f', 1)
               .arg(o.noise.sigma_max * 1000, 0, 'f', 1)
@@ -113,7 +123,7 @@ void PartTracksPanel::refreshSummary() {
               .arg(kTrackRestColor.name(), objectColor(doc_->demonstration().object_index(t->tracks.object_ids[size_t(row)])).name(),
                    kDoubtColor.name(), kOkColor.name(), kWarningColor.name(), kErrorColor.name(), kUnseenColor.name());
   summary_->setText(text);
-  summary_->setToolTip(text);  // the line is cut where the dock is narrow
+  summary_->setToolTip(text + tip);  // the line is cut where the dock is narrow
 }
 
 }  // namespace demoplan::ui
