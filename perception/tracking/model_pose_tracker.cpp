@@ -473,16 +473,18 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     // So does a part found where a ride that is over (its riders at rest) took it.
     const bool ride_over = riding && std::all_of(s.rides[k]->ride.riders().begin(), s.rides[k]->ride.riders().end(),
                                                  [&](size_t j) { return resting[j] && s.seen_last[j]; });
-    if (found_resting || ride_over) s.centres[k].assign(3, s.centres[k].back());
+    // So does a part placed again by the operator, as measured there.
+    if (found_resting || ride_over || placed) s.centres[k].assign(3, s.centres[k].back());
     // Motion is carried on only between frames both seen: a part found again after a gap did
     // not move from its stale pose in one frame.
     if (seen_before && !riding)
       s.previous[k] = s.camera_T_part[k];
     else
       s.previous[k].reset();
-    // Its rest broke (not in the start frame, where the parts rest: a first measurement's
-    // correction is no move), or it stays there; found riding, it moves.
-    if (resting[k] && frame > init_.frame && !r.camera_T_part.isApprox(s.camera_T_part[k])) {
+    // Its rest broke (not in the start frame, where the parts rest, nor where the operator placed
+    // it again: a first measurement's correction is no move), or it stays there; found riding,
+    // it moves.
+    if (resting[k] && frame > init_.frame && !placed && !r.camera_T_part.isApprox(s.camera_T_part[k])) {
       moving[k] = true;
       s.left_rest[k] = frame;
     } else if (resting[k] || found_resting || ride_over) {

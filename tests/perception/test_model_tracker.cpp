@@ -1070,6 +1070,16 @@ TEST(ModelTracker, RefusesAStartOutsideTheImage) {
       EXPECT_EQ(e.field(), "parts[0].world_T_object");
       EXPECT_NE(e.reason().find("box"), std::string::npos) << e.what();
     }
+    // The same placement as a correction, the start right.
+    init.parts[0].world_T_object = box_pose(0, 0, 0.9);
+    init.corrections.push_back({"box", 5, outside});
+    ModelPoseTracker corrected({{"box", true, box_mesh(kBox, {40, 40, 200})}}, init, "init.json", {}, o);
+    try {
+      corrected.start({clip.camera(), 30.0, 1});
+      FAIL() << "a correction outside the image was accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "corrections[0].world_T_object");
+    }
   }
   // And a part without triangles, before any frame.
   TrackerInit init;
