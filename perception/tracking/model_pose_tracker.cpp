@@ -523,11 +523,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     // At the rest first (a part put down some frames before, the hand still near it), then,
     // from the earliest frame that shows it there, back into its carry.
     const double bar = std::max(options_.lost_contrast, options_.relative_contrast * s.reference_contrast[k]);
-    date_rest_back(k, frame, bar, 1);
-    int first = frame;
-    while (first > 0 && s.tracks.samples[k][first - 1].valid && s.tracks.samples[k][first - 1].pose.isApprox(sample.pose))
-      --first;
-    follow_back(k, first, bar);
+    follow_back(k, date_rest_back(k, frame, bar, 1), bar);
   }
   // The last frames, kept a while: where a part comes to rest shows how it got there (while a
   // part is missed: follow_back; while one comes to rest: date_rest_back).
@@ -603,8 +599,9 @@ void ModelPoseTracker::follow_back(size_t k, int frame, double bar) {
   }
 }
 
-void ModelPoseTracker::date_rest_back(size_t k, int frame, double bar, int seen_for) {
+int ModelPoseTracker::date_rest_back(size_t k, int frame, double bar, int seen_for) {
   State& s = *state_;
+  int earliest = frame - seen_for + 1;
   // Its rest is seen over the last `seen_for` frames; the ones before are asked, latest first.
   const OcclusionMap map = occlusion_map();
   for (auto it = s.recent.rbegin(); it != s.recent.rend(); ++it) {
@@ -629,7 +626,9 @@ void ModelPoseTracker::date_rest_back(size_t k, int frame, double bar, int seen_
     sample.valid = true;
     sample.pose = s.world_T_camera * s.camera_T_part[k];
     sample.confidence = confidence_of(r);
+    earliest = f;
   }
+  return earliest;
 }
 
 void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {

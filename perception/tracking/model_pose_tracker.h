@@ -256,7 +256,8 @@ private:
   void follow_back(size_t k, int frame, double bar);
   // Part k, come to rest in `frame`: the kept frames before its `seen_for` still ones (three;
   // one for a part placed again) reported at the rest while they show it there (date_rests_back).
-  void date_rest_back(size_t k, int frame, double bar, int seen_for = 3);
+  // Returns the earliest frame it is now reported at the rest in.
+  int date_rest_back(size_t k, int frame, double bar, int seen_for = 3);
 
   std::vector<ModelPart> models_;
   std::vector<FurnitureMesh> furniture_;

@@ -85,10 +85,13 @@ Clip render_clip(const std::vector<Pose>& truth, const std::vector<bool>& covere
   return clip;
 }
 
-// The box tracked through the clip from `start` (its pose at frame 0).
-PoseTracks track_clip(const Clip& clip, const Pose& start, ModelTrackerOptions o = {}) {
+// The box tracked through the clip from `start` (its pose at frame 0), placed again where
+// `corrections` say.
+PoseTracks track_clip(const Clip& clip, const Pose& start, ModelTrackerOptions o = {},
+                      const std::vector<PartCorrection>& corrections = {}) {
   TrackerInit init;
   init.parts.push_back({"box", start});
+  init.corrections = corrections;
   o.contour.views = 300;
   ModelPoseTracker tracker({{"box", true, box_mesh(kBox, {40, 40, 200})}}, init, "init.json", {}, o);
   tracker.start({clip.camera(), 30.0, static_cast<int>(clip.frames.size())});
@@ -532,22 +535,11 @@ TEST(ModelTracker, APartPlacedAgainByTheOperatorIsTrackedFromThere) {
     covered.push_back(f >= 10 && f < 20);
   }
   const Clip clip = render_clip(truth, covered);
-  auto track = [&](const std::vector<PartCorrection>& corrections) {
-    TrackerInit init;
-    init.parts.push_back({"box", truth[0]});
-    init.corrections = corrections;
-    ModelTrackerOptions o;
-    o.contour.views = 300;
-    ModelPoseTracker tracker({{"box", true, box_mesh(kBox, {40, 40, 200})}}, init, "init.json", {}, o);
-    tracker.start({clip.camera(), 30.0, static_cast<int>(clip.frames.size())});
-    for (size_t f = 0; f < clip.frames.size(); ++f) tracker.track(static_cast<int>(f), clip.frames[f]);
-    return tracker.finish();
-  };
-  const PoseTracks lost = track({});
+  const PoseTracks lost = track_clip(clip, truth[0]);
   for (int f = 20; f < 36; ++f)
     EXPECT_TRUE(!lost.samples[0][f].valid || error_mm(lost.samples[0][f], truth[f]) > 20.0)
         << "frame " << f << ": found without the correction (the test needs a part lost for good)";
-  const PoseTracks placed = track({{"box", 25, truth[25]}});
+  const PoseTracks placed = track_clip(clip, truth[0], {}, {{"box", 25, truth[25]}});
   for (int f = 20; f < 36; ++f) {
     ASSERT_TRUE(placed.samples[0][f].valid) << "frame " << f;
     EXPECT_LT(error_mm(placed.samples[0][f], truth[f]), 5.0) << "frame " << f;
@@ -1056,30 +1048,28 @@ TEST(ModelTracker, APartHiddenOnABoardThatRidesIsFoundWhereTheRideTookIt) {
 // A start that puts a part behind the camera or beside the picture is refused, naming the part.
 TEST(ModelTracker, RefusesAStartOutsideTheImage) {
   const Clip clip = render_clip({box_pose(0, 0, 0.9)}, {false});
-  for (const Pose& outside : {box_pose(0, 0, -0.5), box_pose(2.0, 0, 0.9)}) {
-    TrackerInit init;
-    init.parts.push_back({"box", outside});
+  // Starting the tracker on `init` is refused, naming the file, `field` and the part.
+  auto refused = [&](const TrackerInit& init, const std::string& field) {
     ModelTrackerOptions o;
     o.contour.views = 20;
     ModelPoseTracker tracker({{"box", true, box_mesh(kBox, {40, 40, 200})}}, init, "init.json", {}, o);
     try {
       tracker.start({clip.camera(), 30.0, 1});
-      FAIL() << "a start outside the image was accepted";
+      ADD_FAILURE() << "accepted: " << field << " outside the image";
     } catch (const InputError& e) {
       EXPECT_EQ(e.file(), "init.json");
-      EXPECT_EQ(e.field(), "parts[0].world_T_object");
+      EXPECT_EQ(e.field(), field);
       EXPECT_NE(e.reason().find("box"), std::string::npos) << e.what();
     }
+  };
+  for (const Pose& outside : {box_pose(0, 0, -0.5), box_pose(2.0, 0, 0.9)}) {
+    TrackerInit init;
+    init.parts.push_back({"box", outside});
+    refused(init, "parts[0].world_T_object");
     // The same placement as a correction, the start right.
     init.parts[0].world_T_object = box_pose(0, 0, 0.9);
     init.corrections.push_back({"box", 5, outside});
-    ModelPoseTracker corrected({{"box", true, box_mesh(kBox, {40, 40, 200})}}, init, "init.json", {}, o);
-    try {
-      corrected.start({clip.camera(), 30.0, 1});
-      FAIL() << "a correction outside the image was accepted";
-    } catch (const InputError& e) {
-      EXPECT_EQ(e.field(), "corrections[0].world_T_object");
-    }
+    refused(init, "corrections[0].world_T_object");
   }
   // And a part without triangles, before any frame.
   TrackerInit init;

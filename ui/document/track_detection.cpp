@@ -36,9 +36,8 @@ int TrackDetection::detect() {
 void TrackDetection::showVideoTracks(std::shared_ptr<const perception::TracksDemonstration> tracks, const QString& tracker) {
   tracks_ = std::move(tracks);
   error_.clear();
-  from_video_ = tracks_ != nullptr;
-  tracker_ = from_video_ ? tracker : QString();
-  source_ = from_video_ ? tr("from the video (%1 tracker)").arg(tracker == QLatin1String("markers") ? tr("marker") : tracker)
+  tracker_ = tracks_ ? tracker : QString();
+  source_ = fromVideo() ? tr("from the video (%1 tracker)").arg(tracker == QLatin1String("markers") ? tr("marker") : tracker)
                        : QString();
   emit tracksChanged();
 }
@@ -63,7 +62,6 @@ std::shared_ptr<const perception::TracksDemonstration> TrackDetection::tracks() 
 void TrackDetection::setTracks(std::shared_ptr<const perception::TracksDemonstration> tracks) {
   tracks_ = std::move(tracks);
   error_.clear();
-  from_video_ = false;
   tracker_.clear();
   source_ = tracks_ ? tr("from the task's pose tracks") : QString();
   emit tracksChanged();

@@ -36,7 +36,7 @@ public:
   QString error() const { return error_; }
   // Where the tracks come from, for the panel: the video's tracker (markers, model) or the task.
   QString source() const { return source_; }
-  bool fromVideo() const { return from_video_; }
+  bool fromVideo() const { return !tracker_.isEmpty(); }
   // The video's tracker ("markers", "model"); empty for the task's tracks.
   QString tracker() const { return tracker_; }
   // The tracks a detection in the video measured (`tracker` names the tracker).
@@ -52,8 +52,7 @@ private:
   std::shared_ptr<const perception::TracksDemonstration> tracks_;
   QString error_;
   QString source_;
-  bool from_video_ = false;
-  QString tracker_;
+  QString tracker_;  // empty: the task's tracks, or none
 };
 
 }  // namespace demoplan::ui
