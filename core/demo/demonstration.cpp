@@ -21,12 +21,6 @@ std::string describe(const Demonstration& d, size_t i) {
                               : "object #" + std::to_string(e.object);
   return std::string(type_name(e.type)) + " of " + obj + " at frame " + std::to_string(e.frame);
 }
-
-Json pose_to_json(const Pose& T) {
-  Json rows = Json::array();
-  for (int r = 0; r < 4; ++r) rows.push_back({T(r, 0), T(r, 1), T(r, 2), T(r, 3)});
-  return rows;
-}
 }  // namespace
 
 int Demonstration::object_index(const std::string& id) const {
@@ -135,7 +129,7 @@ Json demonstration_to_json(const Demonstration& d) {
   for (const auto& e : d.events) {
     Json poses = Json::object(), frames = Json::object();
     for (size_t o = 0; o < e.poses.size() && o < d.object_ids.size(); ++o) {
-      poses[d.object_ids[o]] = pose_to_json(e.poses[o]);
+      poses[d.object_ids[o]] = pose_matrix_json(e.poses[o]);
       if (o < e.pose_frames.size() && !e.pose_frames[o].empty()) frames[d.object_ids[o]] = e.pose_frames[o];
     }
     Json ev{{"frame", e.frame},

@@ -97,6 +97,12 @@ Eigen::VectorXd JsonField::vector() const {
   return v;
 }
 
+Json pose_matrix_json(const Pose& T) {
+  Json rows = Json::array();
+  for (int r = 0; r < 4; ++r) rows.push_back({T(r, 0), T(r, 1), T(r, 2), T(r, 3)});
+  return rows;
+}
+
 Pose JsonField::pose(double rotation_tol) const {
   if (!value_->is_array() || value_->size() != 4) fail("must be a 4x4 matrix (4 rows of 4 numbers)");
   Eigen::Matrix4d M;

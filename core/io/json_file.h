@@ -47,6 +47,9 @@ private:
   std::string path_;
 };
 
+// A pose as the 4x4 row-major matrix JsonField::pose() reads.
+Json pose_matrix_json(const Pose& T);
+
 // Checks the "format" and "version" fields every demoplan file starts with; throws InputError.
 // `kind` (e.g. "project") names the file's kind when its format is another's.
 void check_format(const JsonField& root, const std::string& format, int version, const std::string& kind = "");

@@ -28,11 +28,7 @@ void save_path(const std::string& file, const Path& path) {
   Json waypoints = Json::array();
   for (const auto& w : path.waypoints) {
     Json objects = Json::array();
-    for (const auto& T : w.objects) {
-      Json rows = Json::array();
-      for (int r = 0; r < 4; ++r) rows.push_back({T(r, 0), T(r, 1), T(r, 2), T(r, 3)});
-      objects.push_back(rows);
-    }
+    for (const auto& T : w.objects) objects.push_back(pose_matrix_json(T));
     Json wp{{"q", std::vector<double>(w.q.data(), w.q.data() + w.q.size())},
             {"objects", objects},
             {"state", w.state},

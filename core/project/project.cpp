@@ -1,5 +1,6 @@
 #include "core/project/project.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -115,6 +116,12 @@ Json project_to_json(const Project& p, const std::string& file) {
          {"planner", planner_settings_to_json(p.planner)},
          {"result", p.result ? result_to_json(*p.result, file) : Json(nullptr)},
          {"view", {{"frame", p.frame}}}};
+  if (!p.tracker_corrections.empty()) {
+    Json corrections = Json::array();
+    for (const auto& c : p.tracker_corrections)
+      corrections.push_back({{"id", c.id}, {"frame", c.frame}, {"world_T_object", pose_matrix_json(c.world_T_object)}});
+    j["tracker_corrections"] = corrections;
+  }
   return j;
 }
 
@@ -145,6 +152,21 @@ Project project_from_json(const Json& json, const std::string& file) {
   p.demonstration = demonstration_from_json(demo.value(), file + ": demonstration");
   if (root.has("planner")) p.planner = planner_settings_from_json(root["planner"]);
   if (root.has("result") && !root["result"].is_null()) p.result = result_from_json(root["result"], file);
+  if (root.has("tracker_corrections")) {
+    const JsonField corrections = root["tracker_corrections"];
+    const auto& ids = p.demonstration.object_ids;
+    for (size_t i = 0; i < corrections.size(); ++i) {
+      const JsonField c = corrections[i];
+      PartCorrection pc{c["id"].string(), c["frame"].integer(), c["world_T_object"].pose()};
+      if (std::find(ids.begin(), ids.end(), pc.id) == ids.end())
+        c["id"].fail("part '" + pc.id + "' is not in the demonstration");
+      if (pc.frame < 1) c["frame"].fail("must be after the start frame 0");
+      for (const auto& before : p.tracker_corrections)
+        if (before.id == pc.id && before.frame == pc.frame)
+          c["frame"].fail("part '" + pc.id + "' is placed twice in frame " + std::to_string(pc.frame));
+      p.tracker_corrections.push_back(pc);
+    }
+  }
   if (root.has("view") && root["view"].has("frame")) p.frame = std::max(0, root["view"]["frame"].integer());
   return p;
 }

@@ -12,6 +12,9 @@
 //  "demonstration": {"format": "demoplan-demonstration", "version": 1, ...},  // with the edits
 //  "planner": {...},                           // core/planning/planner_settings.h
 //  "result": {"path": "x.path.json", ...summary of the last run} | null,
+//  "tracker_corrections": [{"id": "YCBV_03", "frame": 92, "world_T_object": 4x4 row-major}],
+//                                              // optional: parts the operator placed again for
+//                                              // the part-model tracker (part_correction.h)
 //  "view": {"frame": 0}}
 // Paths are stored relative to the project file's folder (absolute paths are kept as they are)
 // and held absolute in memory. Units: metres, radians, seconds.
@@ -19,6 +22,7 @@
 #include <string>
 
 #include "core/demo/demonstration.h"
+#include "core/demo/part_correction.h"
 #include "core/io/json_file.h"
 #include "core/placement/placement_region.h"
 #include "core/planning/plan_job.h"
@@ -77,6 +81,9 @@ struct Project {
   Demonstration demonstration;
   PlannerSettings planner;
   std::optional<ResultSummary> result;
+  // Where the operator placed parts again for the part-model tracker, in the order placed: one
+  // per part and frame, each frame after 0, each id one of the demonstration's.
+  std::vector<PartCorrection> tracker_corrections;
   int frame = 0;  // where the playhead was
 };
 

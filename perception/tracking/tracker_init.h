@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/demo/part_correction.h"
 #include "core/geometry/se3.h"
 
 namespace demoplan::perception {
@@ -21,12 +22,7 @@ struct PartStart {
   Pose world_T_object = Pose::Identity();
 };
 
-// A part placed again at a later frame (an operator's correction).
-struct PartCorrection {
-  std::string id;
-  int frame = 0;
-  Pose world_T_object = Pose::Identity();
-};
+using demoplan::PartCorrection;  // a part placed again at a later frame (an operator's correction)
 
 struct TrackerInit {
   int frame = 0;

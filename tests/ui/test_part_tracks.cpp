@@ -130,7 +130,8 @@ private slots:
   }
 
   // Tracks from the video's model tracker that lose a part for good: the summary says from
-  // which frame, and its tooltip how to place the part again; the marker tracker's do not.
+  // which frame (a link there), and its tooltip how to place the part again; the marker tracker's
+  // do not. Placed again later, the part starts where the tracker last had it.
   void aPartTheModelTrackerLostForGoodIsPointedOut() {
     QCOMPARE(doc_->trackDetection()->detect(), 4);
     auto lost = std::make_shared<perception::TracksDemonstration>(*tracks_->view()->tracks());
@@ -147,6 +148,15 @@ private slots:
     QVERIFY2(text.contains(QStringLiteral("lost from frame %1 on").arg(from)), qPrintable(text));
     QVERIFY2(tracks_->summaryLabel()->toolTip().contains(QStringLiteral("corrections")), qPrintable(tracks_->summaryLabel()->toolTip()));
     QVERIFY(window_->grab().save(test::artifactDir() + QStringLiteral("/part_tracks_lost.png")));
+    // The link takes the playhead there; placed again later, the part starts where the tracker last had it.
+    emit tracks_->summaryLabel()->linkActivated(QStringLiteral("lost:%1").arg(from));
+    QCOMPARE(doc_->currentFrame(), from);
+    doc_->setCurrentFrame(from + 5);
+    const int object = doc_->demonstration().object_index("YCBV_02");
+    const int placed = doc_->placeAgain(object);
+    QVERIFY(placed >= 0);
+    QVERIFY((doc_->corrections()[size_t(placed)].world_T_object.translation() -
+             samples[size_t(from - 1)].pose.translation()).norm() < 1e-9);
     doc_->trackDetection()->showVideoTracks(lost, QStringLiteral("markers"));
     QVERIFY2(!tracks_->summaryLabel()->text().contains(QStringLiteral("lost from")), qPrintable(tracks_->summaryLabel()->text()));
   }

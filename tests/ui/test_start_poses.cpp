@@ -4,18 +4,23 @@
 // predicts (and only that outline is recomputed), init.json beside the marker scene wins over the
 // project's poses, and without a camera or a video, off the start frame or with the marker
 // tracker nothing is drawn. A part behind the camera or half out of the image draws nothing
-// wrong.
+// wrong. A part placed again at a later frame (Edit > Place Part Again Here) is drawn over that
+// frame where it was placed, moved there, saved, and given to the detection.
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <opencv2/imgproc.hpp>
 
 #include "perception/camera/camera_model.h"
+#include "core/project/project.h"
 #include "perception/events/tracks_demonstration.h"
+#include "perception/extraction/tracks_file.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/synthetic_video.h"
 #include "perception/tracking/tracker_init.h"
 #include "ui/document/document.h"
+#include "ui/widgets/pose_editor.h"
 #include "ui/widgets/video_panel.h"
 #include "ui_test_support.h"
 
@@ -244,6 +249,89 @@ private slots:
                  outcome->error.find("Part Tracks") != std::string::npos,
              outcome->error.c_str());
     QCOMPARE(measured->tracks().get(), nothing.tracks.get());
+  }
+
+  // Edit > Place Part Again Here: over a later frame the part placed there is drawn where it was
+  // placed (only it), the Inspector shows and moves that placement (not the demonstration), undo
+  // takes it back, it is saved with the project, and Detect Events gets it after init.json's.
+  void aPartPlacedAgainIsDrawnOverItsFrameAndMovedThere() {
+    const int o = 1, frame = 6;
+    const std::string id = doc_->scene().objects[o].id;
+    const perception::TracksFile truth = perception::load_tracks_file(synth_.truth_tracks);
+    const int row = truth.raw.object_index(id);
+    QVERIFY(row >= 0 && frame < int(truth.raw.samples[size_t(row)].size()));
+    const Pose there = truth.raw.samples[size_t(row)][size_t(frame)].pose;
+    doc_->setCurrentFrame(0);
+    doc_->selectObject(o);
+    QCOMPARE(doc_->placeAgain(o), -1);  // frame 0 is the start: the part itself is moved there
+    doc_->setCurrentFrame(frame);
+    QVERIFY(!starts().shown());
+    const Demonstration before = doc_->demonstration();
+    const int c = doc_->placeAgain(o);
+    QCOMPARE(c, 0);
+    QCOMPARE(doc_->placeAgain(o), c);  // once per part and frame
+    QCOMPARE(int(doc_->corrections().size()), 1);
+    QCOMPARE(doc_->corrections()[0].frame, frame);
+    // Placed where the demonstration shows it (no detection in the video yet), shown there.
+    QVERIFY((doc_->corrections()[0].world_T_object.translation() - doc_->demoPosesAt(frame)[o].translation()).norm() < 1e-9);
+    doc_->setCorrectionPose(c, there);
+    QVERIFY((doc_->displayState().objects[o].translation() - there.translation()).norm() < 1e-9);
+    QVERIFY(starts().shown());
+    QVERIFY2(starts().caption().contains(QStringLiteral("Placed again here: %1").arg(QString::fromStdString(id))),
+             qPrintable(starts().caption()));
+    QVERIFY(starts().outlines()[0].empty());  // only the part placed here
+    const double on_edge = fractionWithin(edgeDistances(o), 2.0);
+    qInfo("placed again at frame %d at its true pose: %.0f %% of the outline within 2 px of an edge", frame, 100 * on_edge);
+    QVERIFY2(on_edge > 0.9, qPrintable(QString::number(on_edge)));
+    view_->grab().save(test::artifactDir() + QStringLiteral("/placed-again.png"));
+    // The Inspector edits the placement: 3 cm along x moves its outline, the events keep their poses.
+    PoseEditor editor(doc_.get());
+    QVERIFY(std::abs(editor.field(0)->value() - there.translation().x() * 1000) < 0.1);  // shown to 0.1 mm
+    const QRectF at_truth = starts().bounds(o);
+    editor.field(0)->setValue(there.translation().x() * 1000 + 30);
+    QVERIFY(std::abs(doc_->corrections()[0].world_T_object.translation().x() - (there.translation().x() + 0.03)) < 1e-4);
+    QCOMPARE(demonstration_digest(doc_->demonstration()), demonstration_digest(before));
+    const QPointF shift = starts().bounds(o).center() - at_truth.center();
+    QVERIFY2(std::hypot(shift.x(), shift.y()) > 10, qPrintable(QStringLiteral("%1, %2 px").arg(shift.x()).arg(shift.y())));
+    doc_->undoStack()->undo();  // the Inspector's move
+    QVERIFY((doc_->corrections()[0].world_T_object.translation() - there.translation()).norm() < 1e-9);
+    // Detect Events gets it: after the start, from the project.
+    std::string source;
+    const perception::TrackerInit start = doc_->detection()->modelTrackerStart(&source);
+    QCOMPARE(int(start.corrections.size()), 1);
+    QCOMPARE(start.corrections[0].frame, frame);
+    QVERIFY2(source.find("placed again") != std::string::npos, source.c_str());
+    // Saved with the project and read back.
+    const QString file = dir_.filePath(QStringLiteral("placed.demoplan"));
+    doc_->saveAs(file);
+    Document reopened(test::dataDir().toStdString());
+    reopened.open(file);
+    QCOMPARE(int(reopened.corrections().size()), 1);
+    QCOMPARE(reopened.corrections()[0].id, id);
+    QVERIFY((reopened.corrections()[0].world_T_object.translation() - there.translation()).norm() < 1e-9);
+    // Undo takes the placement back (the move, then the placing).
+    doc_->undoStack()->undo();
+    doc_->undoStack()->undo();
+    QVERIFY(doc_->corrections().empty());
+    QVERIFY(!starts().shown());
+  }
+
+  // A part placed again outside the picture stops detection with a message that says so.
+  void aPartPlacedAgainOutsideThePictureIsRefused() {
+    const int o = 1;
+    doc_->setCurrentFrame(6);
+    const int c = doc_->placeAgain(o);
+    Pose away = doc_->corrections()[size_t(c)].world_T_object;
+    away.translation() += camera().world_T_camera->linear() * Eigen::Vector3d(5.0, 0, 0);  // 5 m to the camera's right
+    doc_->setCorrectionPose(c, away);
+    std::optional<ExtractionOutcome> outcome;
+    connect(doc_->detection(), &EventDetection::done, this, [&](const ExtractionOutcome& x) { outcome = x; });
+    doc_->detection()->start();
+    QVERIFY(test::waitFor([&] { return outcome.has_value(); }, 120000));
+    QVERIFY(!outcome->ok);
+    QVERIFY2(outcome->error.find("placed again") != std::string::npos, outcome->error.c_str());
+    QVERIFY2(outcome->error.find("outside the 1280x720 image") != std::string::npos, outcome->error.c_str());
+    QVERIFY2(outcome->error.find(doc_->scene().objects[o].id) != std::string::npos, outcome->error.c_str());
   }
 
   void onlyOnTheStartFrameWithThePartModels() {

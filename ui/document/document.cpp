@@ -16,6 +16,7 @@
 #include "core/project/placement_problem.h"
 #include "core/project/project_scene.h"
 #include "perception/camera/camera_model.h"
+#include "perception/events/tracks_demonstration.h"
 #include "perception/video/video_reader.h"
 #include "ui/document/demo_poses.h"
 
@@ -118,6 +119,29 @@ private:
   State before_, after_;
 };
 
+// Parts placed again for the part-model tracker: the list before and after (a few entries).
+class CorrectionsCommand : public QUndoCommand {
+public:
+  CorrectionsCommand(Document* doc, const QString& text, std::vector<PartCorrection> before,
+                     std::vector<PartCorrection> after, long merge_key)
+      : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)), merge_key_(merge_key) {}
+  void redo() override { doc_->applyCorrections(after_); }
+  void undo() override { doc_->applyCorrections(before_); }
+  int id() const override { return merge_key_ >= 0 ? kMergeCorrection : -1; }
+  bool mergeWith(const QUndoCommand* other) override {
+    auto* o = dynamic_cast<const CorrectionsCommand*>(other);
+    if (!o || o->merge_key_ != merge_key_) return false;
+    after_ = o->after_;
+    return true;
+  }
+  static constexpr int kMergeCorrection = 4;
+
+private:
+  Document* doc_;
+  std::vector<PartCorrection> before_, after_;
+  long merge_key_;
+};
+
 constexpr int kMergePose = 1;
 constexpr int kMergeConfidence = 2;
 
@@ -218,6 +242,7 @@ void Document::install(Project p, std::shared_ptr<const Scene> scene, std::share
   if (p.scene.is_cell()) cell_ = load_cell(p.scene.cell);
   scene_ref_ = p.scene;
   demonstration_ = p.demonstration;
+  corrections_ = p.tracker_corrections;
   scene_ = std::move(scene);
   task_ = std::move(task);
   file_ = file;
@@ -260,6 +285,9 @@ Project Document::project() const {
   p.camera = media_->cameraFile();
   p.markers = media_->markersFile();
   p.demonstration = demonstration_;
+  // A part a cell edit removed takes its corrections with it.
+  for (const auto& c : corrections_)
+    if (demonstration_.object_index(c.id) >= 0) p.tracker_corrections.push_back(c);
   p.planner = planning_->settings();
   p.result = planning_->storedResult();
   p.frame = frame_;
@@ -536,6 +564,65 @@ void Document::replaceDemonstration(const Demonstration& demo, const QString& te
   pushEdit(text, demo, -1);
 }
 
+// ------------------------------------------------------------------ parts placed again
+
+int Document::correctionAt(int object, int frame) const {
+  if (object < 0 || object >= static_cast<int>(demonstration_.object_ids.size())) return -1;
+  for (size_t i = 0; i < corrections_.size(); ++i)
+    if (corrections_[i].frame == frame && corrections_[i].id == demonstration_.object_ids[object])
+      return static_cast<int>(i);
+  return -1;
+}
+
+int Document::placeAgain(int object) {
+  if (!scene_ || frame_ < 1 || object < 0 || object >= static_cast<int>(demonstration_.object_ids.size())) return -1;
+  if (const int existing = correctionAt(object, frame_); existing >= 0) return existing;
+  const std::string& id = demonstration_.object_ids[object];
+  PartCorrection c{id, frame_, displayState().objects.at(static_cast<size_t>(object))};
+  // Where the tracker last had it is nearer than the demonstration's rest when it drifted.
+  if (track_detection_->fromVideo())
+    if (const auto tracks = track_detection_->tracks()) {
+      const int row = tracks->tracks.object_index(id);
+      if (row >= 0) {
+        const auto& samples = tracks->tracks.samples[static_cast<size_t>(row)];
+        for (int f = std::min(frame_, static_cast<int>(samples.size()) - 1); f >= 0; --f)
+          if (samples[static_cast<size_t>(f)].valid) {
+            c.world_T_object = samples[static_cast<size_t>(f)].pose;
+            break;
+          }
+      }
+    }
+  std::vector<PartCorrection> after = corrections_;
+  after.push_back(c);
+  undo_.push(new CorrectionsCommand(this, tr("Place %1 again at frame %2").arg(q(id)).arg(frame_), corrections_,
+                                    after, -1));
+  return static_cast<int>(after.size()) - 1;
+}
+
+void Document::setCorrectionPose(int index, const Pose& pose, int merge_key) {
+  if (index < 0 || index >= static_cast<int>(corrections_.size())) return;
+  std::vector<PartCorrection> after = corrections_;
+  after[static_cast<size_t>(index)].world_T_object = pose;
+  const PartCorrection& c = after[static_cast<size_t>(index)];
+  undo_.push(new CorrectionsCommand(this, tr("Move %1 placed again at frame %2").arg(q(c.id)).arg(c.frame),
+                                    corrections_, after, merge_key >= 0 ? index * 1024L + merge_key : -1));
+}
+
+void Document::removeCorrection(int index) {
+  if (index < 0 || index >= static_cast<int>(corrections_.size())) return;
+  std::vector<PartCorrection> after = corrections_;
+  const PartCorrection c = after[static_cast<size_t>(index)];
+  after.erase(after.begin() + index);
+  undo_.push(new CorrectionsCommand(this, tr("Remove %1's placement at frame %2").arg(q(c.id)).arg(c.frame),
+                                    corrections_, after, -1));
+}
+
+void Document::applyCorrections(const std::vector<PartCorrection>& corrections) {
+  corrections_ = corrections;
+  emit correctionsChanged();
+  emit displayChanged();
+}
+
 // ------------------------------------------------------------------ selection and time
 
 void Document::selectEvent(int index) {
@@ -648,6 +735,10 @@ SceneState Document::displayState() const {
   if (display_mode_ == DisplayMode::Result && planning_->interpolator()) return planning_->interpolator()->at(playback_t_);
   s.q = initialConfiguration();
   s.objects = demoPosesAt(frame_);
+  // A part placed again here is shown where it was placed (the gizmo moves it there).
+  for (size_t o = 0; o < s.objects.size(); ++o)
+    if (const int c = correctionAt(static_cast<int>(o), frame_); c >= 0)
+      s.objects[o] = corrections_[static_cast<size_t>(c)].world_T_object;
   return s;
 }
 

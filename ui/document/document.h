@@ -14,6 +14,7 @@
 
 #include "core/cell/cell.h"
 #include "core/cell/cell_scene.h"
+#include "core/demo/part_correction.h"
 #include "core/demo/benchmark_scene.h"
 #include "core/project/project.h"
 #include "ui/document/event_detection.h"
@@ -121,6 +122,23 @@ public:
   // Used by the undo commands.
   void applyDemonstration(const Demonstration& demo, int selected_event);
 
+  // ---- parts placed again for the part-model tracker (the project's tracker_corrections): where
+  // the tracker lost a part or followed it wrongly, the operator places it over a later frame of
+  // the video as over the start frame, and Detect Events takes it from there.
+  const std::vector<PartCorrection>& corrections() const { return corrections_; }
+  // The correction of `object` at `frame`; -1 when there is none.
+  int correctionAt(int object, int frame) const;
+  // Places `object` again at the playhead (one undo step), where the last detection in the video
+  // last measured it (at or before the playhead), else where the demonstration shows it there.
+  // Returns the correction's index (an existing one at this frame is returned as it is), or -1 at
+  // frame 0 (the start: placed by moving the part there) or without such a part.
+  int placeAgain(int object);
+  // Moves a correction (one undo step; consecutive edits with the same merge_key >= 0 merge).
+  void setCorrectionPose(int index, const Pose& pose, int merge_key = -1);
+  void removeCorrection(int index);
+  // Used by the undo command.
+  void applyCorrections(const std::vector<PartCorrection>& corrections);
+
   // ---- selection and time
   int selectedEvent() const { return selected_event_; }
   int selectedObject() const { return selected_object_; }
@@ -160,6 +178,7 @@ signals:
   void saved(const QString& file);
   void sceneChanged();  // the same project on another scene: a cell edit, its undo or redo
   void cellFileChanged();
+  void correctionsChanged();
 
 private:
   // validate()'s rules, then the rests no support holds (supported_rests.h).
@@ -177,6 +196,7 @@ private:
   std::unique_ptr<CellPartCache> part_cache_;
   SceneReference scene_ref_;
   Demonstration demonstration_;
+  std::vector<PartCorrection> corrections_;
   QString file_;
   bool template_ = false;
   bool extra_modified_ = false;

@@ -90,6 +90,22 @@ perception::TrackerInit EventDetection::modelTrackerStart(std::string* source) c
                            "part '" + o.id + "' is not in the project's scene, so it has no start to place: give every "
                            "part's pose in frame 0 in " + init_file.string());
   }
+  // The parts the operator placed again in the GUI, after those of init.json (a placement of the
+  // same part in the same frame replaces the file's).
+  const std::string project = doc_->filePath().isEmpty() ? "the project" : doc_->filePath().toStdString();
+  const auto& placed = doc_->corrections();
+  for (size_t i = 0; i < placed.size(); ++i) {
+    const PartCorrection& c = placed[i];
+    const std::string field = "tracker_corrections[" + std::to_string(i) + "]";
+    if (!init.find(c.id)) throw InputError(project, field + ".id", "part '" + c.id + "' has no start in " + from);
+    if (c.frame <= init.frame)
+      throw InputError(project, field + ".frame",
+                       "part '" + c.id + "' is placed again in frame " + std::to_string(c.frame) +
+                           ", not after the start frame " + std::to_string(init.frame) + " of " + from);
+    std::erase_if(init.corrections, [&](const PartCorrection& f) { return f.id == c.id && f.frame == c.frame; });
+    init.corrections.push_back(c);
+  }
+  if (!placed.empty()) from += " and the parts placed again in the project";
   if (source) *source = from;
   return init;
 }

@@ -29,9 +29,10 @@ public:
   // no part in it carries a marker, else the markers.
   void setModelTracker(bool model);
   bool modelTracker() const { return model_tracker_; }
-  // Where the part models start as start() would give them to the tracker (the rule above), for
-  // the run and for the video panel's outlines; `source` names it. Throws InputError when
-  // init.json cannot be read.
+  // Where the part models start as start() would give them to the tracker (the rule above), with
+  // the parts placed again (init.json's corrections, then the project's: Document::corrections),
+  // for the run and for the video panel's outlines; `source` names it. Throws InputError when
+  // init.json cannot be read or a part placed again has no start or is placed before it.
   perception::TrackerInit modelTrackerStart(std::string* source = nullptr) const;
   // The source modelTrackerStart() names when the parts start where the project shows them.
   static constexpr const char* kPosesAtFrameZero = "the parts' poses at frame 0";

@@ -325,6 +325,25 @@ void MainWindow::createActions() {
   track_detect_action_->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+D")));
   track_detect_action_->setStatusTip(tr("Find the grasps and releases from the benchmark task's pose tracks alone (no labels); "
                                         "the Part Tracks panel shows why each is where it is. Undo brings the old events back."));
+  edit->addSeparator();
+  auto* place_again = edit->addAction(tr("&Place Part Again Here"), this, &MainWindow::placePartAgain);
+  place_again->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+P")));
+  place_again->setStatusTip(tr("Where the part-model tracker lost the selected part or followed it wrongly: place it "
+                               "again over this frame, and Detect Events follows it from there"));
+  auto* remove_placement = edit->addAction(tr("Remove This Placement"), this, [this] {
+    doc_->removeCorrection(doc_->correctionAt(doc_->selectedObject(), doc_->currentFrame()));
+  });
+  auto update_placement = [this, place_again, remove_placement] {
+    const int object = doc_->hasProject() ? doc_->selectedObject() : -1;
+    place_again->setEnabled(object >= 0 && doc_->currentFrame() > 0);
+    remove_placement->setEnabled(doc_->correctionAt(object, doc_->currentFrame()) >= 0);
+  };
+  connect(doc_, &Document::selectionChanged, this, update_placement);
+  connect(doc_, &Document::currentFrameChanged, this, update_placement);
+  connect(doc_, &Document::correctionsChanged, this, update_placement);
+  connect(doc_, &Document::projectLoaded, this, update_placement);
+  update_placement();
+  edit->addSeparator();
   auto* next_issue = edit->addAction(tr("Go to the &Broken Rule"), this, [this] { timeline_->jumpToIssue(0); });
   next_issue->setShortcut(QKeySequence(QStringLiteral("Ctrl+J")));
   auto* next_doubt = edit->addAction(tr("Go to the Next D&oubt"), this, [this] {
@@ -983,6 +1002,26 @@ void MainWindow::addEventAtPlayhead(EventType type) {
   doc_->selectEvent(doc_->addEvent(doc_->currentFrame(), object, type));
 }
 
+void MainWindow::placePartAgain() {
+  const int object = doc_->hasProject() ? doc_->selectedObject() : -1;
+  if (object < 0) {
+    statusBar()->showMessage(tr("Select a part first (click it in the 3D view or its lane in the timeline)"), 5000);
+    return;
+  }
+  if (doc_->currentFrame() < 1) {
+    statusBar()->showMessage(tr("Frame 0 is the start: move the part itself there"), 5000);
+    return;
+  }
+  doc_->placeAgain(object);
+  const QString id = QString::fromStdString(doc_->demonstration().object_ids[size_t(object)]);
+  QString text = tr("%1 placed again at frame %2: move it (3D view or Inspector) until its outline lies on it in the "
+                    "video, then Detect Events (Ctrl+D)")
+                     .arg(id)
+                     .arg(doc_->currentFrame());
+  if (!doc_->detection()->modelTracker()) text += tr("; only the Part models tracker uses it");
+  statusBar()->showMessage(text, 15000);
+}
+
 void MainWindow::showShortcuts() {
   const QString rows[][2] = {{"Space", tr("play / pause (the video, or the path when it is shown)")},
                              {"← / →", tr("one frame back / forward")},
@@ -995,6 +1034,7 @@ void MainWindow::showShortcuts() {
                              {"Ctrl+J", tr("go to the event that breaks a rule")},
                              {"Ctrl+Shift+J", tr("go to the next detection doubt")},
                              {"Ctrl+Shift+D", tr("detect the events from the benchmark task's pose tracks")},
+                             {"Ctrl+Shift+P", tr("place the selected part again over this frame (part models)")},
                              {"F", tr("fit the 3D view")},
                              {"T", tr("show / hide the planner's trees")},
                              {"F5 / Esc", tr("plan / cancel planning")},

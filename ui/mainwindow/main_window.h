@@ -126,6 +126,7 @@ private:
   void showShortcuts();
   void showAbout();
   void addEventAtPlayhead(EventType type);
+  void placePartAgain();  // the selected part at the playhead (Document::placeAgain)
   QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area);
 
   MainWindowOptions options_;

@@ -866,10 +866,15 @@ bool SceneView::gizmoFrame(QVector3D& origin, float& length, GizmoTarget& target
     target.pose = cell->furniture[size_t(furniture)].pose;
   } else {
     target.object = doc_->selectedObject();
-    target.event = doc_->editEvent();
-    if (target.object < 0 || target.event < 0) return false;
-    target.pose = world_pose_at_event(*scene_, doc_->demonstration(), size_t(target.event), target.object,
-                                      doc_->initialConfiguration());
+    target.correction = doc_->correctionAt(target.object, doc_->currentFrame());
+    if (target.correction >= 0) {
+      target.pose = doc_->corrections()[size_t(target.correction)].world_T_object;
+    } else {
+      target.event = doc_->editEvent();
+      if (target.object < 0 || target.event < 0) return false;
+      target.pose = world_pose_at_event(*scene_, doc_->demonstration(), size_t(target.event), target.object,
+                                        doc_->initialConfiguration());
+    }
   }
   origin = toQt(target.pose.translation());
   length = std::clamp((camera_.eye() - origin).length() * 0.1f, 0.06f, 0.25f);
@@ -942,6 +947,10 @@ void SceneView::applyGizmoPose(const Pose& T) {
     // One drag, one undo step (keys apart from the Cell panel's per-field ones).
     QString error;
     if (!doc_->moveFurniture(drag_target_.furniture, T, 1'000'000 + drag_serial_ % 800, &error)) emit editRefused(error);
+    return;
+  }
+  if (drag_target_.correction >= 0) {
+    doc_->setCorrectionPose(drag_target_.correction, T, 100 + drag_serial_ % 800);
     return;
   }
   doc_->setObjectPose(drag_target_.event, drag_target_.object, T, 100 + drag_serial_ % 800);

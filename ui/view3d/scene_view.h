@@ -126,6 +126,7 @@ private:
   struct GizmoTarget {
     Pose pose = Pose::Identity();
     int event = -1, object = -1, furniture = -1;
+    int correction = -1;  // the part placed again at the playhead (Document::corrections)
   };
   bool gizmoFrame(QVector3D& origin, float& length, GizmoTarget& target) const;
   void applyGizmoPose(const Pose& pose);

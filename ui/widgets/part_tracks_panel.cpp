@@ -27,6 +27,10 @@ PartTracksPanel::PartTracksPanel(Document* doc, QWidget* parent) : QWidget(paren
   label->setBuddy(parts_);
   summary_ = new QLabel(this);
   summary_->setTextFormat(Qt::RichText);
+  // "lost from frame N on": the playhead to where the tracker lost the part.
+  connect(summary_, &QLabel::linkActivated, this, [this](const QString& link) {
+    if (link.startsWith(QLatin1String("lost:"))) doc_->setCurrentFrame(link.mid(5).toInt());
+  });
   // A long line is cut, not a reason for the dock (and the window) to be wider.
   summary_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   bar->addWidget(label);
@@ -107,9 +111,10 @@ void PartTracksPanel::refreshSummary() {
   QString tip;
   if (doc_->trackDetection()->tracker() == QLatin1String("model") && size_t(row) < t->tracks.samples.size())
     if (const int lost = perception::track_coverage(t->tracks.samples[size_t(row)]).lost_for_good_from(); lost > 0) {
-      text += tr(" · <span style='color:%1'>lost from frame %2 on</span>").arg(kErrorColor.name()).arg(lost);
-      tip = tr("<br>Where a later frame shows it, place it again there in the \"corrections\" of init.json beside "
-               "the marker scene and detect again (docs/perception.md).");
+      text += tr(" · <a href='lost:%2' style='color:%1'>lost from frame %2 on</a>").arg(kErrorColor.name()).arg(lost);
+      tip = tr("<br>Click it to go there. Where a later frame shows the part, Edit > Place Part Again Here "
+               "(Ctrl+Shift+P) at that frame, move it onto the part in the video, and detect again (or give it in "
+               "the \"corrections\" of init.json beside the marker scene, docs/perception.md).");
     }
   // The noise decides how wide a rest is: worth seeing next to the curves.
   text += tr(" · noise σ %1–%2 mm, %3° · %4 usable frames")

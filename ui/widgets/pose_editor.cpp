@@ -43,8 +43,13 @@ PoseEditor::PoseEditor(Document* doc, QWidget* parent) : QWidget(parent), doc_(d
 
   pose_ = new PoseFields(tr("Pose in the world"), this);
   connect(pose_, &PoseFields::edited, this, [this](const Pose& T, int field) {
+    if (refreshing_ || shown_object_ < 0) return;
+    if (const int c = doc_->correctionAt(shown_object_, doc_->currentFrame()); c >= 0) {
+      doc_->setCorrectionPose(c, T, /*merge_key=*/field);
+      return;
+    }
     const int ev = doc_->editEvent();
-    if (!refreshing_ && ev >= 0 && shown_object_ >= 0) doc_->setObjectPose(ev, shown_object_, T, /*merge_key=*/field);
+    if (ev >= 0) doc_->setObjectPose(ev, shown_object_, T, /*merge_key=*/field);
   });
   layout->addWidget(pose_);
   note_ = new QLabel(this);
@@ -73,6 +78,7 @@ PoseEditor::PoseEditor(Document* doc, QWidget* parent) : QWidget(parent), doc_(d
   connect(doc_, &Document::demonstrationChanged, this, &PoseEditor::refresh);
   connect(doc_, &Document::selectionChanged, this, &PoseEditor::refresh);
   connect(doc_, &Document::currentFrameChanged, this, &PoseEditor::refresh);
+  connect(doc_, &Document::correctionsChanged, this, &PoseEditor::refresh);
   refresh();
 }
 
@@ -90,6 +96,11 @@ void PoseEditor::refresh() {
     if (has)
       for (const auto& id : doc_->demonstration().object_ids) object_->addItem(QString::fromStdString(id));
     object_->setCurrentIndex(obj);
+  }
+  if (const int c = has ? doc_->correctionAt(obj, doc_->currentFrame()) : -1; c >= 0) {
+    showCorrection(c, obj);
+    refreshing_ = false;
+    return;
   }
   const bool editable = ev >= 0 && obj >= 0;
   pose_->setEditable(editable);
@@ -136,6 +147,23 @@ void PoseEditor::refresh() {
     note_->setText(note);
   }
   refreshing_ = false;
+}
+
+// A part placed again at the playhead: its pose there is the tracker's new start, not an event's.
+void PoseEditor::showCorrection(int index, int object) {
+  const PartCorrection& c = doc_->corrections()[static_cast<size_t>(index)];
+  pose_->setEditable(true);
+  frame_->setEnabled(false);
+  confidence_->setEnabled(false);
+  event_label_->setText(tr("<b>%1 placed again</b> at %2")
+                            .arg(QString::fromStdString(c.id), frameText(c.frame, doc_->fps())));
+  const int shown = -2 - index;  // apart from every event's index
+  pose_->setPose(c.world_T_object, shown == shown_event_ && object == shown_object_);
+  shown_event_ = shown;
+  shown_object_ = object;
+  note_->setText(tr("Detect Events with the part models follows %1 from this pose on: move it until its outline lies "
+                    "on the part in the video. Edit > Remove This Placement takes it away.")
+                     .arg(QString::fromStdString(c.id)));
 }
 
 }  // namespace demoplan::ui

@@ -2,7 +2,8 @@
 // The inspector: the selected event (type, frame, confidence) and the selected part's pose at
 // that event, typed in millimetres and degrees (roll, pitch, yaw as URDF writes them). A change
 // applies to every event of the part's rest (it cannot move while nobody holds it) and goes
-// through the undo stack; consecutive steps of one field merge into one undo step.
+// through the undo stack; consecutive steps of one field merge into one undo step. On a frame
+// where the selected part was placed again (Document::corrections), that placement instead.
 #include <QWidget>
 
 #include "ui/document/document.h"
@@ -30,6 +31,7 @@ public:
 
 private:
   void refresh();
+  void showCorrection(int index, int object);
 
   Document* doc_;
   QLabel* event_label_;

@@ -2,6 +2,8 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QStringList>
+#include <algorithm>
 
 #include "perception/camera/camera_model.h"
 #include "perception/render/part_meshes.h"
@@ -59,15 +61,36 @@ void StartPoseOutlines::update(Document& doc, bool frame_shown) {
   try {
     start = doc.detection()->modelTrackerStart(&source);
   } catch (const std::exception& e) {
-    if (doc.currentFrame() == 0) caption_ = QString::fromUtf8(e.what());
+    const auto& placed = doc.corrections();
+    if (doc.currentFrame() == 0 ||
+        std::any_of(placed.begin(), placed.end(), [&](const auto& c) { return c.frame == doc.currentFrame(); }))
+      caption_ = QString::fromUtf8(e.what());
     return;
   }
-  if (doc.currentFrame() != start.frame) return;
+  // Over the start frame every part's start; over a later frame the parts placed again there.
+  const int frame = doc.currentFrame();
+  std::vector<perception::PartStart> shown;
+  if (frame == start.frame) {
+    shown = start.parts;
+  } else {
+    for (const auto& c : start.corrections)
+      if (c.frame == frame) shown.push_back({c.id, c.world_T_object});
+    if (shown.empty()) return;
+  }
   shown_ = true;
-  caption_ = source == EventDetection::kPosesAtFrameZero
-                 ? tr("Start poses of the part models: move a part (3D view or Inspector) until its outline lies on it")
-                 : tr("Start poses from %1 (Detect Events uses these; moving a part does not change them)")
-                       .arg(QString::fromStdString(source));
+  const bool from_poses = source.rfind(EventDetection::kPosesAtFrameZero, 0) == 0;
+  if (frame != start.frame) {
+    QStringList ids;
+    for (const auto& p : shown) ids << QString::fromStdString(p.id);
+    caption_ = tr("Placed again here: %1. Move it (3D view or Inspector) until its outline lies on it; Detect Events "
+                  "follows it from here")
+                   .arg(ids.join(", "));
+  } else {
+    caption_ = from_poses
+                   ? tr("Start poses of the part models: move a part (3D view or Inspector) until its outline lies on it")
+                   : tr("Start poses from %1 (Detect Events uses these; moving a part does not change them)")
+                         .arg(QString::fromStdString(source));
+  }
   if (!meshes_built_) buildMeshes(doc);
   if (camera != camera_) forgetOutlines();
   camera_ = camera;
@@ -78,7 +101,8 @@ void StartPoseOutlines::update(Document& doc, bool frame_shown) {
   clock.start();
   const int computed_before = computed_;
   for (size_t o = 0; o < objects.size() && o < meshes_.size(); ++o) {
-    const perception::PartStart* part = start.find(objects[o].id);
+    const auto it = std::find_if(shown.begin(), shown.end(), [&](const auto& p) { return p.id == objects[o].id; });
+    const perception::PartStart* part = it == shown.end() ? nullptr : &*it;
     if (!part) {
       poses_[o].reset();
       outlines_[o].clear();

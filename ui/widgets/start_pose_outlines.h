@@ -1,8 +1,8 @@
 #pragma once
 // The parts' outlines where the part-model tracker would start them (EventDetection::
-// modelTrackerStart), over the start frame of the video: the operator moves a part with the 3D
-// view's gizmo or types its pose until its outline lies on the part in the video, then detects
-// the events. Each outline is the silhouette edge of the part's mesh through the project's
+// modelTrackerStart), over the start frame of the video, and of the parts placed again over the
+// frame they were placed in: the operator moves a part with the 3D view's gizmo or types its pose
+// until its outline lies on the part in the video, then detects the events. Each outline is the silhouette edge of the part's mesh through the project's
 // camera (perception's silhouette_outline), recomputed only for a part whose start pose or the
 // camera changed.
 #include <QPolygonF>
@@ -25,7 +25,8 @@ class StartPoseOutlines {
 public:
   // Recomputes for the document as it stands. Shown only with a video frame on screen
   // (`frame_shown`), a camera with its pose, the part-model tracker chosen and the playhead on
-  // the start frame: over any other frame the parts have moved, and the outlines would mislead.
+  // the start frame or a frame where parts were placed again (then only those): over any other
+  // frame the parts have moved, and the outlines would mislead.
   void update(Document& doc, bool frame_shown);
   void forgetMeshes();    // another project or scene
   void forgetOutlines();  // another camera

@@ -28,6 +28,7 @@ TimelineWidget::TimelineWidget(Document* doc, QWidget* parent) : QWidget(parent)
   connect(doc_, &Document::demonstrationChanged, this, repaint);
   connect(doc_, &Document::selectionChanged, this, repaint);
   connect(doc_, &Document::currentFrameChanged, this, repaint);
+  connect(doc_, &Document::correctionsChanged, this, repaint);
   connect(doc_->media(), &Media::videoChanged, this, repaint);
   connect(doc_, &Document::projectLoaded, this, [this] {
     updateGeometry();
@@ -76,6 +77,22 @@ int TimelineWidget::doubtAt(const QPointF& p) const {
   if (!doc_->hasProject()) return -1;
   for (int i = 0; i < int(doc_->demonstration().doubts.size()); ++i)
     if (doubtRect(i).adjusted(-2, 0, 2, 0).contains(p)) return i;
+  return -1;
+}
+
+QRectF TimelineWidget::correctionRect(int index) const {
+  const auto& placed = doc_->corrections();
+  if (index < 0 || index >= int(placed.size())) return {};
+  const int lane = doc_->demonstration().object_index(placed[size_t(index)].id);
+  if (lane < 0) return {};
+  // Low in the lane, under the event markers at the same frame.
+  return QRectF(frameToX(placed[size_t(index)].frame) - 5, laneTop(lane) + kLane - 11, 10, 10);
+}
+
+int TimelineWidget::correctionAt(const QPointF& p) const {
+  if (!doc_->hasProject()) return -1;
+  for (int i = 0; i < int(doc_->corrections().size()); ++i)
+    if (correctionRect(i).adjusted(-2, -2, 2, 2).contains(p)) return i;
   return -1;
 }
 
@@ -221,6 +238,20 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
       break;
     }
   }
+  // Parts placed again for the part-model tracker: a diamond in the part's colour.
+  for (int i = 0; i < int(doc_->corrections().size()); ++i) {
+    const QRectF r = correctionRect(i);
+    if (r.isEmpty()) continue;
+    QPainterPath diamond;
+    diamond.moveTo(r.center().x(), r.top());
+    diamond.lineTo(r.right(), r.center().y());
+    diamond.lineTo(r.center().x(), r.bottom());
+    diamond.lineTo(r.left(), r.center().y());
+    diamond.closeSubpath();
+    p.setPen(QPen(pal.color(QPalette::Text), 1.2));
+    p.setBrush(objectColor(d.object_index(doc_->corrections()[size_t(i)].id)));
+    p.drawPath(diamond);
+  }
   // Markers, the one being dragged as a ghost at its new frame.
   for (int i = 0; i < int(d.events.size()); ++i) {
     if (drag_ == Drag::Event && drag_event_ == i && drag_moved_) {
@@ -254,6 +285,12 @@ void TimelineWidget::mousePressEvent(QMouseEvent* e) {
     drag_ = Drag::Event;
     drag_event_ = ev;
     drag_frame_ = doc_->demonstration().events[ev].frame;
+    return;
+  }
+  if (const int c = correctionAt(e->position()); c >= 0) {
+    const PartCorrection& placed = doc_->corrections()[size_t(c)];
+    doc_->selectObject(doc_->demonstration().object_index(placed.id));
+    doc_->setCurrentFrame(placed.frame);
     return;
   }
   const int lane = laneAt(e->position().y());
@@ -318,6 +355,10 @@ void TimelineWidget::contextMenuEvent(QContextMenuEvent* e) {
                    this, [this, ev] { doc_->removeEvent(ev); });
     if (ce.confidence < 1.0)
       menu.addAction(tr("Mark as checked (confidence 100%)"), this, [this, ev] { doc_->setEventConfidence(ev, 1.0); });
+  } else if (const int c = correctionAt(e->pos()); c >= 0) {
+    const PartCorrection& placed = doc_->corrections()[size_t(c)];
+    menu.addAction(tr("Remove the placement of %1 at frame %2").arg(QString::fromStdString(placed.id)).arg(placed.frame),
+                   this, [this, c] { doc_->removeCorrection(c); });
   } else if (const int doubt = doubtAt(e->pos()); doubt >= 0) {
     menu.addAction(tr("Dismiss This Doubt (checked)"), this, [this, doubt] { doc_->removeDoubt(doubt); });
   }
@@ -328,6 +369,12 @@ void TimelineWidget::contextMenuEvent(QContextMenuEvent* e) {
                    [this, frame, lane] { doc_->selectEvent(doc_->addEvent(frame, lane, EventType::Grasp)); });
     menu.addAction(tr("Add release of %1 at frame %2").arg(name).arg(frame), this,
                    [this, frame, lane] { doc_->selectEvent(doc_->addEvent(frame, lane, EventType::Release)); });
+    if (frame > 0 && doc_->correctionAt(lane, frame) < 0)
+      menu.addAction(tr("Place %1 again at frame %2 (part models)").arg(name).arg(frame), this, [this, frame, lane] {
+        doc_->selectObject(lane);
+        doc_->setCurrentFrame(frame);
+        doc_->placeAgain(lane);
+      });
   }
   if (!menu.isEmpty()) menu.exec(e->globalPos());
 }
@@ -348,6 +395,12 @@ bool TimelineWidget::event(QEvent* e) {
           tip += QStringLiteral("<br><span style='color:#cf222e'>%1</span>").arg(QString::fromStdString(issue.message).toHtmlEscaped());
       tip += tr("<br><i>drag to move · right-click to delete</i>");
       QToolTip::showText(he->globalPos(), tip, this, markerRect(ev).toRect());
+    } else if (const int c = correctionAt(he->pos()); c >= 0) {
+      const PartCorrection& placed = doc_->corrections()[size_t(c)];
+      const QString tip = tr("<b>%1 placed again</b> at %2<br>Detect Events with the part models follows it from this "
+                             "pose<br><i>click to show it over the video · right-click to remove</i>")
+                              .arg(QString::fromStdString(placed.id), frameText(placed.frame, doc_->fps()));
+      QToolTip::showText(he->globalPos(), tip, this, correctionRect(c).toRect());
     } else if (const int doubt = doubtAt(he->pos()); doubt >= 0) {
       const DetectionDoubt& x = doc_->demonstration().doubts[size_t(doubt)];
       const QString tip = tr("<b>Detection doubt</b>, frames %1–%2<br>%3<br><i>check the events here · right-click to "

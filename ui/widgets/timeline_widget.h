@@ -31,6 +31,8 @@ public:
   int eventAt(const QPointF& p) const;  // -1 when none
   QRectF doubtRect(int doubt) const;    // of Demonstration::doubts[doubt], in its part's lane
   int doubtAt(const QPointF& p) const;  // -1 when none
+  QRectF correctionRect(int index) const;  // of Document::corrections()[index], in its part's lane
+  int correctionAt(const QPointF& p) const;  // -1 when none
   int laneAt(double y) const;           // -1 when none
   QSize sizeHint() const override;
   QSize minimumSizeHint() const override;
