@@ -550,6 +550,20 @@ std::vector<size_t> ModelPoseTracker::apply_corrections(int frame, const cv::Mat
     if (c.frame != frame) continue;
     const auto k = static_cast<size_t>(part_index(c.id));
     s.camera_T_part[k] = s.world_T_camera.inverse() * c.world_T_object;
+    corrected.push_back(k);
+  }
+  if (corrected.empty()) return corrected;
+  // Placed by hand, as a start is: a few millimetres to centimetres off, moved to where the frame
+  // shows it the same way (GrabCut's random generator from its initial state, as at the start).
+  {
+    cv::RNG& rng = cv::theRNG();
+    const cv::RNG before = rng;
+    rng = cv::RNG();
+    for (const size_t k : corrected) settle_start(image, k);
+    rng = before;
+  }
+  for (const size_t k : corrected) {
+    const Pose world_T_object = s.world_T_camera * s.camera_T_part[k];
     // At rest where it was put, as at the start: nothing of its last motion, rest or ride goes on.
     s.centres[k].assign(3, centre_in_image(k, s.camera_T_part[k]));
     s.previous[k].reset();
@@ -560,12 +574,10 @@ std::vector<size_t> ModelPoseTracker::apply_corrections(int frame, const cv::Mat
     s.rest_find[k].reset();
     s.holds[k] = RestHold();
     s.rides[k].reset();
-    s.rest_rotation[k] = c.world_T_object.linear();
-    s.rest_world[k] = c.world_T_object;
+    s.rest_rotation[k] = world_T_object.linear();
+    s.rest_world[k] = world_T_object;
     s.left_rest[k] = -1;
-    corrected.push_back(k);
   }
-  if (corrected.empty()) return corrected;
   // Its colours learnt there too (what the tracker knew of it may be why it was lost), and how
   // well it stands out there as its bar from now on.
   const OcclusionMap map = occlusion_map();
