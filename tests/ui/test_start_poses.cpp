@@ -277,7 +277,7 @@ private slots:
     doc_->setCorrectionPose(c, there);
     QVERIFY((doc_->displayState().objects[o].translation() - there.translation()).norm() < 1e-9);
     QVERIFY(starts().shown());
-    QVERIFY2(starts().caption().contains(QStringLiteral("Placed again here: %1").arg(QString::fromStdString(id))),
+    QVERIFY2(starts().caption().contains(QStringLiteral("%1 placed again here").arg(QString::fromStdString(id))),
              qPrintable(starts().caption()));
     QVERIFY(starts().outlines()[0].empty());  // only the part placed here
     const double on_edge = fractionWithin(edgeDistances(o), 2.0);
