@@ -14,10 +14,12 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.h"
+#include "core/geometry/polygon_2d.h"
 #include "core/parallel_for.h"
 #include "perception/render/part_meshes.h"
 #include "perception/render/rasterizer.h"
 #include "perception/tracking/appearance_error.h"
+#include "perception/tracking/carrier_top.h"
 #include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/light_correction.h"
 #include "perception/tracking/rest_hold.h"
@@ -524,6 +526,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     // from the earliest frame that shows it there, back into its carry.
     const double bar = std::max(options_.lost_contrast, options_.relative_contrast * s.reference_contrast[k]);
     follow_back(k, date_rest_back(k, frame, bar, 1), bar);
+    ride_back(k, frame);
   }
   // The last frames, kept a while: where a part comes to rest shows how it got there (while a
   // part is missed: follow_back; while one comes to rest: date_rest_back).
@@ -728,6 +731,60 @@ void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {
       s.camera_T_part[k] = T;
       current = there;
     }
+  }
+}
+
+void ModelPoseTracker::ride_back(size_t k, int frame) {
+  State& s = *state_;
+  auto& mine = s.tracks.samples[k];
+  // The frames it was not seen in before the correction (and the follow-back's), and the last it was.
+  int last = frame - 1;
+  while (last >= 0 && mine[last].valid) --last;
+  const int gap_end = last;
+  while (last >= 0 && !mine[last].valid) --last;
+  if (gap_end < 0 || last < 0) return;
+  const Pose placed = mine[frame].pose;
+  const Eigen::Vector3d& c = contours_[k]->centre();
+  const double bottom = (placed * c).z() - centre_height(models_[k].mesh, c, placed.linear());
+  for (size_t j = 0; j < models_.size(); ++j) {
+    const auto& carrier = s.tracks.samples[j];
+    if (j == k || !carrier[frame].valid || !carrier[last].valid) continue;
+    if ((carrier[frame].pose.translation() - carrier[last].pose.translation()).norm() < options_.hold_ride_min) continue;
+    // On its top now: its lowest point there, its centre over the top.
+    const auto top = carrier_top(parts_[j].extent, carrier[frame].pose);
+    if (!top || std::abs(bottom - top->front().z()) > options_.ride_height) continue;
+    const Eigen::Vector2d p = (placed * c).head<2>();
+    bool over = true;
+    for (size_t i = 0; i < top->size() && over; ++i) {
+      const Eigen::Vector2d a = (*top)[i].head<2>(), b = (*top)[(i + 1) % top->size()].head<2>();
+      over = cross2(b - a, p - a) >= 0;
+    }
+    if (!over) continue;
+    const Pose on_carrier = carrier[frame].pose.inverse() * placed;
+    constexpr double kRideConfidence = 0.6;  // inferred, not measured (amber in Part Tracks)
+    for (int f = last + 1; f <= gap_end; ++f)
+      if (carrier[f].valid) {
+        mine[f].valid = true;
+        mine[f].pose = carrier[f].pose * on_carrier;
+        mine[f].confidence = kRideConfidence;
+      }
+    // Its rest before the ride, where its image put it but its depth did not: where the ride began.
+    const Eigen::Vector3d eye = s.world_T_camera.translation();
+    const Pose start = carrier[last].pose * on_carrier;
+    const Eigen::Vector3d seen = (mine[last].pose * c - eye).normalized(), there = (start * c - eye).normalized();
+    const double radius = contours_[k]->radius() / (start * c - eye).norm();
+    const Eigen::Vector3d stale = mine[last].pose.translation(), carrier_at = carrier[last].pose.translation();
+    // (One within the ride's tolerance was measured right: kept as measured.)
+    if (std::acos(std::clamp(seen.dot(there), -1.0, 1.0)) > radius ||
+        (start.translation() - stale).norm() <= options_.ride_tolerance)
+      return;
+    for (int f = last; f >= 0 && mine[f].valid && carrier[f].valid; --f) {
+      if ((mine[f].pose.translation() - stale).norm() > options_.ride_tolerance ||
+          (carrier[f].pose.translation() - carrier_at).norm() > options_.ride_tolerance)
+        break;
+      mine[f].pose = carrier[f].pose * on_carrier;
+    }
+    return;
   }
 }
 

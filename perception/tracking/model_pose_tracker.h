@@ -254,6 +254,10 @@ private:
   // Part k, found at rest in `frame`, tracked back from there through the kept frames before it
   // while it is seen (contrast `bar`), filling its samples there.
   void follow_back(size_t k, int frame, double bar);
+  // Part k, placed again in `frame` on another part that moved while k was lost (a tray): it rode
+  // it. Its unseen frames before are where that part took it, and its last rest before them,
+  // measured off along its line of sight only, where the ride began.
+  void ride_back(size_t k, int frame);
   // Part k, come to rest in `frame`: the kept frames before its `seen_for` still ones (three;
   // one for a part placed again) reported at the rest while they show it there (date_rests_back).
   // Returns the earliest frame it is now reported at the rest in.

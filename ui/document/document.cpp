@@ -578,7 +578,7 @@ int Document::placeAgain(int object) {
   if (!scene_ || frame_ < 1 || object < 0 || object >= static_cast<int>(demonstration_.object_ids.size())) return -1;
   if (const int existing = correctionAt(object, frame_); existing >= 0) return existing;
   const std::string& id = demonstration_.object_ids[object];
-  PartCorrection c{id, frame_, displayState().objects.at(static_cast<size_t>(object))};
+  PartCorrection c{id, frame_, demoPosesAt(frame_).at(static_cast<size_t>(object))};
   // Where the tracker last had it is nearer than the demonstration's rest when it drifted.
   if (track_detection_->fromVideo())
     if (const auto tracks = track_detection_->tracks()) {
