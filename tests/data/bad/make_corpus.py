@@ -297,6 +297,11 @@ p["demonstration"]["events"][0]["poses"]["YCBV_02"][0][0] = 3.0
 write("project/non_rigid_pose.demoplan", dumps(p))
 add("project/non_rigid_pose.demoplan", "project", "a demonstrated pose whose rotation is not orthonormal", INSPECT,
     ["{file}", "events[0]"], gui="project")
+p = json.loads(json.dumps(project))
+p["tracker_corrections"] = [{"id": "YCBV_99", "frame": 40, "world_T_object": p["demonstration"]["events"][0]["poses"]["YCBV_02"]}]
+write("project/correction_unknown_part.demoplan", dumps(p))
+add("project/correction_unknown_part.demoplan", "project", "a part placed again for the tracker that is not in the demonstration",
+    INSPECT, ["{file}", "tracker_corrections[0].id"], gui="project")
 d = json.loads(json.dumps(project["demonstration"]))
 d["events"][0]["poses"]["YCBV_02"][1][3] = None
 write("demonstration/nan_pose.json", dumps(d))
