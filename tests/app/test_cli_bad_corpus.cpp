@@ -141,7 +141,7 @@ TEST(BadCorpusManifest, CoversEveryKind) {
   EXPECT_GE(j.at("entries").size(), 40u);
   for (const char* k : {"video", "urdf", "srdf", "task", "camera", "markers", "bop", "hands", "project", "demonstration"})
     EXPECT_GT(kinds[k], 0) << k;
-  EXPECT_EQ(kinds["project"], 12);
+  EXPECT_EQ(kinds["project"], 13);
   EXPECT_EQ(kinds["demonstration"], 13);
 }
 

@@ -82,7 +82,7 @@ void StartPoseOutlines::update(Document& doc, bool frame_shown) {
   if (frame != start.frame) {
     QStringList ids;
     for (const auto& p : shown) ids << QString::fromStdString(p.id);
-    caption_ = tr("%1 placed again here: move it until its outline lies on the part").arg(ids.join(", "));
+    caption_ = tr("%1 placed again here: move it onto the part").arg(ids.join(", "));
   } else {
     caption_ = from_poses
                    ? tr("Start poses of the part models: move a part (3D view or Inspector) until its outline lies on it")
