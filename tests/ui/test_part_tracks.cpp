@@ -157,6 +157,12 @@ private slots:
     QVERIFY(placed >= 0);
     QVERIFY((doc_->corrections()[size_t(placed)].world_T_object.translation() -
              samples[size_t(from - 1)].pose.translation()).norm() < 1e-9);
+    // Marked on the part's track too.
+    const auto* view = tracks_->view();
+    QVERIFY2(view->toolTipAt(view->axis().toX(from + 5)).contains(QStringLiteral("placed again here")),
+             qPrintable(view->toolTipAt(view->axis().toX(from + 5))));
+    QVERIFY(!view->toolTipAt(view->axis().toX(from + 4)).contains(QStringLiteral("placed again here")));
+    QVERIFY(window_->grab().save(test::artifactDir() + QStringLiteral("/part_tracks_placed.png")));
     doc_->trackDetection()->showVideoTracks(lost, QStringLiteral("markers"));
     QVERIFY2(!tracks_->summaryLabel()->text().contains(QStringLiteral("lost from")), qPrintable(tracks_->summaryLabel()->text()));
   }

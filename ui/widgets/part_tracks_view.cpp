@@ -66,6 +66,7 @@ PartTracksView::PartTracksView(Document* doc, QWidget* parent) : QWidget(parent)
   connect(doc_, &Document::demonstrationChanged, this, repaint);
   connect(doc_, &Document::selectionChanged, this, repaint);
   connect(doc_, &Document::currentFrameChanged, this, repaint);
+  connect(doc_, &Document::correctionsChanged, this, repaint);
   connect(doc_->trackDetection(), &TrackDetection::tracksChanged, this, &PartTracksView::reload);
 }
 
@@ -333,6 +334,22 @@ void PartTracksView::paintMarks(QPainter& p) const {
     p.setBrush(eventColor(e.type));
     p.drawPath(tri);
   }
+  // Where the operator placed this part again: the timeline's diamond over a dashed line.
+  for (const PartCorrection& c : doc_->corrections()) {
+    if (c.id != tracks_->tracks.object_ids[size_t(row_)]) continue;
+    const double cx = a.toX(c.frame), cy = top + 6;
+    p.setPen(QPen(objectColor(object), 1.2, Qt::DashLine));
+    p.drawLine(QPointF(cx, top), QPointF(cx, bottom));
+    QPainterPath diamond;
+    diamond.moveTo(cx, cy - 5);
+    diamond.lineTo(cx + 5, cy);
+    diamond.lineTo(cx, cy + 5);
+    diamond.lineTo(cx - 5, cy);
+    diamond.closeSubpath();
+    p.setPen(QPen(palette().color(QPalette::Text), 1.2));
+    p.setBrush(objectColor(object));
+    p.drawPath(diamond);
+  }
   const double x = a.toX(doc_->currentFrame());
   p.setPen(QPen(kBusyColor, 1.5));
   p.drawLine(QPointF(x, 0), QPointF(x, height()));
@@ -394,6 +411,9 @@ QString PartTracksView::toolTipAt(double x) const {
     if (s.kind == perception::SegmentKind::Ride && s.carrier >= 0 && s.carrier < int(tracks_->tracks.object_ids.size()))
       tip += tr(" on %1").arg(QString::fromStdString(tracks_->tracks.object_ids[size_t(s.carrier)]));
   }
+  for (const PartCorrection& c : doc_->corrections())
+    if (c.frame == frame && c.id == tracks_->tracks.object_ids[size_t(row_)])
+      tip += tr("<br>placed again here (the part models' detection follows it from there)");
   for (const Doubt& d : doubts())
     if (frame >= d.first && frame <= d.last)
       tip += tr("<br><span style='color:%1'>doubt, frames %2–%3:</span> %4")
