@@ -197,15 +197,6 @@ Scene build_benchmark_scene(const BenchmarkTask& task, const std::string& robot_
 
 SupportBox support_box_at(const Scene& scene, const BenchmarkRobot& robot, const Pose& base) {
   const Eigen::Vector3d p = base.translation();
-  // Inclusive left-of-every-edge test: the benchmark's polygons are counter-clockwise.
-  auto inside = [&](const std::vector<Eigen::Vector3d>& polygon) {
-    for (size_t i = 0; i < polygon.size(); ++i) {
-      const Eigen::Vector3d& a = polygon[i];
-      const Eigen::Vector3d& b = polygon[(i + 1) % polygon.size()];
-      if (cross2((b - a).head<2>(), (p - a).head<2>()) < 0) return false;
-    }
-    return polygon.size() >= 3;
-  };
   double h = 0;
   for (auto f = scene.furniture.rbegin(); f != scene.furniture.rend(); ++f) {
     if (f->kind == kSupportBoxKind) continue;
@@ -214,7 +205,8 @@ SupportBox support_box_at(const Scene& scene, const BenchmarkRobot& robot, const
       for (auto polygon : c.polygon_vertices()) {
         for (Eigen::Vector3d& v : polygon) v = link * v;
         const double zs = polygon.front().z();
-        if (inside(polygon) && zs > h) h = p.z() - zs;  // a height against a height difference, as written
+        // (The benchmark's polygons are counter-clockwise.)
+        if (contains_from_above(polygon, p) && zs > h) h = p.z() - zs;  // a height against a height difference, as written
       }
     }
   }

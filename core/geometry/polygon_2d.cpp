@@ -4,6 +4,15 @@
 
 namespace demoplan {
 
+bool contains_from_above(const std::vector<Eigen::Vector3d>& polygon, const Eigen::Vector3d& point) {
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Eigen::Vector3d& a = polygon[i];
+    const Eigen::Vector3d& b = polygon[(i + 1) % polygon.size()];
+    if (cross2((b - a).head<2>(), (point - a).head<2>()) < 0) return false;
+  }
+  return polygon.size() >= 3;
+}
+
 double polygon_area(const std::vector<Eigen::Vector2d>& p) {
   double a = 0.0;
   for (size_t i = 0; i < p.size(); ++i) a += cross2(p[i], p[(i + 1) % p.size()]);

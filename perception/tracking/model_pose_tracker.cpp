@@ -752,14 +752,8 @@ void ModelPoseTracker::ride_back(size_t k, int frame) {
     if ((carrier[frame].pose.translation() - carrier[last].pose.translation()).norm() < options_.hold_ride_min) continue;
     // On its top now: its lowest point there, its centre over the top.
     const auto top = carrier_top(parts_[j].extent, carrier[frame].pose);
-    if (!top || std::abs(bottom - top->front().z()) > options_.ride_height) continue;
-    const Eigen::Vector2d p = (placed * c).head<2>();
-    bool over = true;
-    for (size_t i = 0; i < top->size() && over; ++i) {
-      const Eigen::Vector2d a = (*top)[i].head<2>(), b = (*top)[(i + 1) % top->size()].head<2>();
-      over = cross2(b - a, p - a) >= 0;
-    }
-    if (!over) continue;
+    if (!top || std::abs(bottom - top->front().z()) > options_.ride_height || !contains_from_above(*top, placed * c))
+      continue;
     const Pose on_carrier = carrier[frame].pose.inverse() * placed;
     constexpr double kRideConfidence = 0.6;  // inferred, not measured (amber in Part Tracks)
     for (int f = last + 1; f <= gap_end; ++f)
