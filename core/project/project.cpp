@@ -153,19 +153,11 @@ Project project_from_json(const Json& json, const std::string& file) {
   if (root.has("planner")) p.planner = planner_settings_from_json(root["planner"]);
   if (root.has("result") && !root["result"].is_null()) p.result = result_from_json(root["result"], file);
   if (root.has("tracker_corrections")) {
-    const JsonField corrections = root["tracker_corrections"];
     const auto& ids = p.demonstration.object_ids;
-    for (size_t i = 0; i < corrections.size(); ++i) {
-      const JsonField c = corrections[i];
-      PartCorrection pc{c["id"].string(), c["frame"].integer(), c["world_T_object"].pose()};
-      if (std::find(ids.begin(), ids.end(), pc.id) == ids.end())
-        c["id"].fail("part '" + pc.id + "' is not in the demonstration");
-      if (pc.frame < 1) c["frame"].fail("must be after the start frame 0");
-      for (const auto& before : p.tracker_corrections)
-        if (before.id == pc.id && before.frame == pc.frame)
-          c["frame"].fail("part '" + pc.id + "' is placed twice in frame " + std::to_string(pc.frame));
-      p.tracker_corrections.push_back(pc);
-    }
+    p.tracker_corrections = read_part_corrections(
+        root["tracker_corrections"], 0,
+        [&](const std::string& id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); },
+        "is not in the demonstration", [](const JsonField& f) { return f.pose(); });
   }
   if (root.has("view") && root["view"].has("frame")) p.frame = std::max(0, root["view"]["frame"].integer());
   return p;

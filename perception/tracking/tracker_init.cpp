@@ -1,7 +1,6 @@
 #include "perception/tracking/tracker_init.h"
 
 #include <set>
-#include <utility>
 
 #include "core/io/json_file.h"
 #include "perception/io/pose_json.h"
@@ -35,22 +34,10 @@ TrackerInit load_tracker_init(const std::string& path) {
     p.world_T_object = pose_from_json(parts[i]["world_T_object"]);
     init.parts.push_back(p);
   }
-  if (root.has("corrections")) {
-    const JsonField corrections = root["corrections"];
-    std::set<std::pair<std::string, int>> placed;
-    for (size_t i = 0; i < corrections.size(); ++i) {
-      PartCorrection c;
-      c.id = corrections[i]["id"].string();
-      if (!init.find(c.id)) corrections[i]["id"].fail("part '" + c.id + "' has no start in \"parts\"");
-      c.frame = corrections[i]["frame"].integer();
-      if (c.frame <= init.frame)
-        corrections[i]["frame"].fail("must be after the start frame (" + std::to_string(init.frame) + ")");
-      if (!placed.insert({c.id, c.frame}).second)
-        corrections[i]["frame"].fail("part '" + c.id + "' is placed twice in frame " + std::to_string(c.frame));
-      c.world_T_object = pose_from_json(corrections[i]["world_T_object"]);
-      init.corrections.push_back(c);
-    }
-  }
+  if (root.has("corrections"))
+    init.corrections = read_part_corrections(
+        root["corrections"], init.frame, [&](const std::string& id) { return init.find(id) != nullptr; },
+        "has no start in \"parts\"", pose_from_json);
   return init;
 }
 
