@@ -78,4 +78,33 @@ PrintDifference print_difference(const cv::Mat& image, const PinholeIntrinsics& 
   return out;
 }
 
+PrintTurn turn_to_print(const cv::Mat& image, const PinholeIntrinsics& K, const Pose& world_T_camera,
+                        const RenderMesh& mesh, const Pose& camera_T_part, const Eigen::Vector3d& centre,
+                        const OcclusionMap& occlusion, int part, double turn, double min_turn) {
+  PrintTurn fit;
+  fit.camera_T_part = camera_T_part;
+  const Pose world_T_part = world_T_camera * camera_T_part;
+  const Eigen::Vector3d c = world_T_part * centre;
+  auto turned = [&](double angle) {
+    Pose R = Pose::Identity();
+    R.linear() = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    R.translation() = c - R.linear() * c;
+    return Pose(world_T_camera.inverse() * R * world_T_part);
+  };
+  double best = appearance_error(image, K, world_T_camera, mesh, camera_T_part, occlusion, part);
+  fit.error_before = best;
+  if (best < 0) return fit;
+  double angle = 0.0;
+  for (double a = turn; a >= min_turn; a /= 2)
+    for (bool moved = true; moved;) {
+      moved = false;
+      for (const double next : {angle + a, angle - a})
+        if (const double e = appearance_error(image, K, world_T_camera, mesh, turned(next), occlusion, part); e >= 0 && e < best)
+          best = e, angle = next, moved = true;
+    }
+  fit.camera_T_part = turned(angle);
+  fit.error = best;
+  return fit;
+}
+
 }  // namespace demoplan::perception

@@ -33,4 +33,16 @@ PrintDifference print_difference(const cv::Mat& image, const PinholeIntrinsics& 
                                  const RenderMesh& mesh, const Pose& camera_T_part, const OcclusionMap& occlusion,
                                  int part, double outlier = 0.0);
 
+// Turns `camera_T_part` about the world's vertical through the part's `centre` (part frame) while
+// its print differs less from `image` (appearance_error), steps halving from `turn` down to
+// `min_turn` (rad). `error_before` and `error`: the print's difference at the start and at the fit
+// (negative: too little of it shows).
+struct PrintTurn {
+  Pose camera_T_part = Pose::Identity();
+  double error_before = -1.0, error = -1.0;
+};
+PrintTurn turn_to_print(const cv::Mat& image, const PinholeIntrinsics& camera, const Pose& world_T_camera,
+                        const RenderMesh& mesh, const Pose& camera_T_part, const Eigen::Vector3d& centre,
+                        const OcclusionMap& occlusion, int part, double turn = 0.07, double min_turn = 0.004);
+
 }  // namespace demoplan::perception

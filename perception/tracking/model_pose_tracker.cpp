@@ -29,6 +29,12 @@ namespace demoplan::perception {
 
 namespace {
 
+// A sample within these of a rest's pose belongs to that rest (held rests repeat it exactly).
+constexpr double kSameRestM = 0.003;
+constexpr double kSameRestRad = 0.0175;
+// Fewer pixels of a part's print than this showing say too little of its turn.
+constexpr int kRestTurnPixels = 200;
+
 // A measurement's confidence: full from a contrast of 0.5 with half the lines on an edge.
 double confidence_of(const RegionFrameResult& r) {
   const double used = static_cast<double>(r.used_lines) / r.lines;
@@ -72,6 +78,16 @@ struct ModelPoseTracker::State {
   std::deque<std::pair<int, cv::Mat>> recent;  // the last frames (follow_back, date_rest_back)
   std::vector<bool> was_resting;               // each part rested in the last frame
   PoseTracks tracks;
+  // Per part, the clearest frame of its current rest so far (the fewest pixels unlike its
+  // print), to turn that rest by (ModelTrackerOptions::rest_turn).
+  struct RestShot {
+    int frame = -1;
+    cv::Mat image;
+    OcclusionMap map;
+    Pose camera_T_part = Pose::Identity();
+    double outliers = 2.0;  // fraction of the pixels it shows in
+  };
+  std::vector<RestShot> rest_shots;
   bool started = false;  // the init frame has been seen
 };
 
@@ -133,6 +149,7 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.rest_find.assign(models_.size(), std::nullopt);
   s.unseen.assign(models_.size(), 0);
   s.moved_for.assign(models_.size(), 0);
+  s.rest_shots.assign(models_.size(), {});
   s.measured_at.assign(models_.size(), -1);
   s.holds.assign(models_.size(), RestHold());
   s.rest_world.assign(models_.size(), std::nullopt);
@@ -538,6 +555,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     s.recent.emplace_back(frame, image.clone());
     if (static_cast<int>(s.recent.size()) > options_.follow_back_frames) s.recent.pop_front();
   }
+  if (options_.rest_turn) watch_rest_turns(frame, image, map, resting);
   const OcclusionMap after = occlusion_map();
   for (size_t k = 0; k < models_.size(); ++k)
     if (learn[k])
@@ -1074,8 +1092,60 @@ std::vector<RidePart> ModelPoseTracker::ride_parts(int frame) const {
   return parts;
 }
 
+void ModelPoseTracker::watch_rest_turns(int frame, const cv::Mat& image, const OcclusionMap& map,
+                                        const std::vector<bool>& resting) {
+  State& s = *state_;
+  for (size_t k = 0; k < models_.size(); ++k) {
+    State::RestShot& shot = s.rest_shots[k];
+    // Its rest is over (it moved, or was found or placed elsewhere): turned now.
+    if (shot.frame >= 0) {
+      const Pose& now = s.camera_T_part[k];
+      if ((now.translation() - shot.camera_T_part.translation()).norm() > kSameRestM ||
+          Eigen::AngleAxisd(now.linear().transpose() * shot.camera_T_part.linear()).angle() > kSameRestRad)
+        turn_rest(k);
+    }
+    if (s.measured_at[k] != frame || !resting[k] || frame % std::max(options_.rest_turn_every, 1) != 0 ||
+        s.rest_shots[k].outliers <= options_.rest_turn_clear)
+      continue;
+    const PrintDifference d = print_difference(image, s.intrinsics, s.world_T_camera, models_[k].mesh, s.camera_T_part[k],
+                                               map, static_cast<int>(k), options_.start_cover_difference);
+    if (d.pixels < kRestTurnPixels) continue;
+    const double outliers = static_cast<double>(d.outliers) / d.pixels;
+    if (outliers < s.rest_shots[k].outliers) s.rest_shots[k] = {frame, image.clone(), map, s.camera_T_part[k], outliers};
+  }
+}
+
+void ModelPoseTracker::turn_rest(size_t k) {
+  State& s = *state_;
+  const State::RestShot shot = std::move(s.rest_shots[k]);
+  s.rest_shots[k] = {};
+  // Something not modelled over it (a hand) even in its clearest frame: a turn would fit that too.
+  if (shot.frame < 0 || shot.outliers > options_.rest_turn_covered) return;
+  const PrintTurn fit = turn_to_print(shot.image, s.intrinsics, s.world_T_camera, models_[k].mesh, shot.camera_T_part,
+                                      contours_[k]->centre(), shot.map, static_cast<int>(k));
+  const Pose before = s.world_T_camera * shot.camera_T_part, after = s.world_T_camera * fit.camera_T_part;
+  if (fit.error < 0 || fit.error > options_.rest_turn_ratio * fit.error_before ||
+      Eigen::AngleAxisd(after.linear().transpose() * before.linear()).angle() > options_.rest_turn_max_deg * M_PI / 180)
+    return;
+  // Every sample of that rest: the frames around the shot reported at the rest's pose.
+  auto at_rest = [&](const PoseSample& p) {
+    return (p.pose.translation() - before.translation()).norm() <= kSameRestM &&
+           Eigen::AngleAxisd(p.pose.linear().transpose() * before.linear()).angle() <= kSameRestRad;
+  };
+  auto& samples = s.tracks.samples[k];
+  for (const int direction : {-1, 1})
+    for (int f = direction < 0 ? shot.frame : shot.frame + 1; f >= 0 && f < static_cast<int>(samples.size()); f += direction) {
+      if (!samples[f].valid) continue;
+      if (!at_rest(samples[f])) break;
+      samples[f].pose = after;
+    }
+}
+
 PoseTracks ModelPoseTracker::finish() {
   if (!state_) throw std::logic_error("ModelPoseTracker::finish before start");
+  // The rests still going on at the end.
+  if (options_.rest_turn)
+    for (size_t k = 0; k < models_.size(); ++k) turn_rest(k);
   return state_->tracks;
 }
 

@@ -176,6 +176,22 @@ struct ModelTrackerOptions {
   double start_cover_difference = 20.0;
   double start_covered_fraction = 0.1;
   int settle_rounds = 10;
+  // A rest's turn about the vertical shows weakly in its outline (a box seen near a face's normal
+  // changes its outline little as it turns), and strongly in its print: once the rest is over
+  // (or the video), its samples are turned about the vertical through the part's centre while
+  // its print (appearance_error.h) differs less from the clearest frame of that rest (the fewest
+  // pixels differing by more than start_cover_difference, looked at every `rest_turn_every`
+  // frames it is measured at rest, until one has at most `rest_turn_clear` of them; a rest whose
+  // clearest frame has more than `rest_turn_covered` is left as it is: something not modelled, a
+  // hand, over it), when that lowers the difference to `rest_turn_ratio` of what it was, by at
+  // most `rest_turn_max_deg`. The
+  // tracking itself goes on from its own poses: only the reported samples turn.
+  bool rest_turn = true;
+  int rest_turn_every = 6;
+  double rest_turn_clear = 0.02;
+  double rest_turn_covered = 0.05;
+  double rest_turn_ratio = 0.95;
+  double rest_turn_max_deg = 11.5;
   double settle_visible_fraction = 0.7;  // of its silhouette: a start less visible is kept as it is
   double settle_contrast_gain = 0.03;  // a settled start is taken when it stands out this much more
   double settle_depth_contrast_gain = 0.1;  // and moved in depth, this much more
@@ -258,6 +274,9 @@ private:
   // it. Its unseen frames before are where that part took it, and its last rest before them,
   // measured off along its line of sight only, where the ride began.
   void ride_back(size_t k, int frame);
+  // The clearest frame of each part's current rest, and that rest turned by its print once over.
+  void watch_rest_turns(int frame, const cv::Mat& image, const OcclusionMap& map, const std::vector<bool>& resting);
+  void turn_rest(size_t k);
   // Part k, come to rest in `frame`: the kept frames before its `seen_for` still ones (three;
   // one for a part placed again) reported at the rest while they show it there (date_rests_back).
   // Returns the earliest frame it is now reported at the rest in.
