@@ -14,7 +14,9 @@
 // resting part that is not measured while another moves is held at its rest (not searched for)
 // and reported there only if that is borne out (ModelTrackerOptions::hold_resting); one that
 // parts resting beside it rode away from is looked for where the same ride would have taken it
-// (ModelTrackerOptions::ride_prediction).
+// (ModelTrackerOptions::ride_prediction). A rest's turn about the vertical, which its outline
+// shows weakly, is reported as the part's print shows it once the rest is over
+// (ModelTrackerOptions::rest_turn).
 #include <functional>
 #include <memory>
 #include <optional>
