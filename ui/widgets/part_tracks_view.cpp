@@ -337,18 +337,10 @@ void PartTracksView::paintMarks(QPainter& p) const {
   // Where the operator placed this part again: the timeline's diamond over a dashed line.
   for (const PartCorrection& c : doc_->corrections()) {
     if (c.id != tracks_->tracks.object_ids[size_t(row_)]) continue;
-    const double cx = a.toX(c.frame), cy = top + 6;
+    const double cx = a.toX(c.frame);
     p.setPen(QPen(objectColor(object), 1.2, Qt::DashLine));
     p.drawLine(QPointF(cx, top), QPointF(cx, bottom));
-    QPainterPath diamond;
-    diamond.moveTo(cx, cy - 5);
-    diamond.lineTo(cx + 5, cy);
-    diamond.lineTo(cx, cy + 5);
-    diamond.lineTo(cx - 5, cy);
-    diamond.closeSubpath();
-    p.setPen(QPen(palette().color(QPalette::Text), 1.2));
-    p.setBrush(objectColor(object));
-    p.drawPath(diamond);
+    paintPlacementMark(p, QRectF(cx - 5, top + 1, 10, 10), object, palette().color(QPalette::Text));
   }
   const double x = a.toX(doc_->currentFrame());
   p.setPen(QPen(kBusyColor, 1.5));

@@ -1,5 +1,7 @@
 #include "ui/widgets/style.h"
 
+#include <QPainter>
+#include <QPainterPath>
 #include <cmath>
 
 namespace demoplan::ui {
@@ -20,6 +22,18 @@ QColor treeColor(int tree) {
   // Golden-angle hues: neighbouring tree indices get clearly different colours.
   const double hue = std::fmod(0.58 + 0.618033988749895 * std::max(0, tree), 1.0);
   return QColor::fromHsvF(float(hue), 0.75f, 0.95f);
+}
+
+void paintPlacementMark(QPainter& p, const QRectF& box, int object, const QColor& outline) {
+  QPainterPath diamond;
+  diamond.moveTo(box.center().x(), box.top());
+  diamond.lineTo(box.right(), box.center().y());
+  diamond.lineTo(box.center().x(), box.bottom());
+  diamond.lineTo(box.left(), box.center().y());
+  diamond.closeSubpath();
+  p.setPen(QPen(outline, 1.2));
+  p.setBrush(objectColor(object));
+  p.drawPath(diamond);
 }
 
 QString eventTypeName(EventType type) { return type == EventType::Grasp ? QStringLiteral("grasp") : QStringLiteral("release"); }

@@ -2,7 +2,10 @@
 // Colours and small formatting helpers every panel shares, so a part has the same colour in
 // the timeline, the 3D view and the video overlay.
 #include <QColor>
+#include <QRectF>
 #include <QString>
+
+class QPainter;
 
 #include "core/demo/demonstration.h"
 #include "core/geometry/se3.h"
@@ -33,6 +36,10 @@ inline const QColor kTrackRestColor{0x8f, 0xa8, 0xbf};
 inline const QColor kTrackAngleColor{0x6a, 0x3d, 0x9a};
 // A frame in which the tracker did not see the part (the part tracks' confidence strip).
 inline const QColor kUnseenColor{0xcc, 0xcc, 0xcc};
+
+// Where the operator placed a part again (Document::corrections): a diamond filling `box`, in the
+// part's colour with an `outline` (timeline lanes and part tracks alike).
+void paintPlacementMark(QPainter& p, const QRectF& box, int object, const QColor& outline);
 
 // "grasp" / "release"
 QString eventTypeName(EventType type);

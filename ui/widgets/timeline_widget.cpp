@@ -241,16 +241,7 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
   // Parts placed again for the part-model tracker: a diamond in the part's colour.
   for (int i = 0; i < int(doc_->corrections().size()); ++i) {
     const QRectF r = correctionRect(i);
-    if (r.isEmpty()) continue;
-    QPainterPath diamond;
-    diamond.moveTo(r.center().x(), r.top());
-    diamond.lineTo(r.right(), r.center().y());
-    diamond.lineTo(r.center().x(), r.bottom());
-    diamond.lineTo(r.left(), r.center().y());
-    diamond.closeSubpath();
-    p.setPen(QPen(pal.color(QPalette::Text), 1.2));
-    p.setBrush(objectColor(d.object_index(doc_->corrections()[size_t(i)].id)));
-    p.drawPath(diamond);
+    if (!r.isEmpty()) paintPlacementMark(p, r, d.object_index(doc_->corrections()[size_t(i)].id), pal.color(QPalette::Text));
   }
   // Markers, the one being dragged as a ghost at its new frame.
   for (int i = 0; i < int(d.events.size()); ++i) {
