@@ -29,9 +29,11 @@ namespace demoplan::perception {
 
 namespace {
 
-// A sample within these of a rest's pose belongs to that rest (held rests repeat it exactly).
-constexpr double kSameRestM = 0.003;
-constexpr double kSameRestRad = 0.0175;
+// Two poses of one rest: within 3 mm and a degree (held rests repeat it exactly).
+bool same_rest(const Pose& a, const Pose& b) {
+  return (a.translation() - b.translation()).norm() <= 0.003 &&
+         Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle() <= 0.0175;
+}
 // Fewer pixels of a part's print than this showing say too little of its turn.
 constexpr int kRestTurnPixels = 200;
 
@@ -1098,12 +1100,7 @@ void ModelPoseTracker::watch_rest_turns(int frame, const cv::Mat& image, const O
   for (size_t k = 0; k < models_.size(); ++k) {
     State::RestShot& shot = s.rest_shots[k];
     // Its rest is over (it moved, or was found or placed elsewhere): turned now.
-    if (shot.frame >= 0) {
-      const Pose& now = s.camera_T_part[k];
-      if ((now.translation() - shot.camera_T_part.translation()).norm() > kSameRestM ||
-          Eigen::AngleAxisd(now.linear().transpose() * shot.camera_T_part.linear()).angle() > kSameRestRad)
-        turn_rest(k);
-    }
+    if (shot.frame >= 0 && !same_rest(s.camera_T_part[k], shot.camera_T_part)) turn_rest(k);
     if (s.measured_at[k] != frame || !resting[k] || frame % std::max(options_.rest_turn_every, 1) != 0 ||
         s.rest_shots[k].outliers <= options_.rest_turn_clear)
       continue;
@@ -1128,15 +1125,11 @@ void ModelPoseTracker::turn_rest(size_t k) {
       Eigen::AngleAxisd(after.linear().transpose() * before.linear()).angle() > options_.rest_turn_max_deg * M_PI / 180)
     return;
   // Every sample of that rest: the frames around the shot reported at the rest's pose.
-  auto at_rest = [&](const PoseSample& p) {
-    return (p.pose.translation() - before.translation()).norm() <= kSameRestM &&
-           Eigen::AngleAxisd(p.pose.linear().transpose() * before.linear()).angle() <= kSameRestRad;
-  };
   auto& samples = s.tracks.samples[k];
   for (const int direction : {-1, 1})
     for (int f = direction < 0 ? shot.frame : shot.frame + 1; f >= 0 && f < static_cast<int>(samples.size()); f += direction) {
       if (!samples[f].valid) continue;
-      if (!at_rest(samples[f])) break;
+      if (!same_rest(samples[f].pose, before)) break;
       samples[f].pose = after;
     }
 }

@@ -178,6 +178,9 @@ struct ModelTrackerOptions {
   double start_cover_difference = 20.0;
   double start_covered_fraction = 0.1;
   int settle_rounds = 10;
+  double settle_visible_fraction = 0.7;  // of its silhouette: a start less visible is kept as it is
+  double settle_contrast_gain = 0.03;  // a settled start is taken when it stands out this much more
+  double settle_depth_contrast_gain = 0.1;  // and moved in depth, this much more
   // A rest's turn about the vertical shows weakly in its outline (a box seen near a face's normal
   // changes its outline little as it turns), and strongly in its print: once the rest is over
   // (or the video), its samples are turned about the vertical through the part's centre while
@@ -186,17 +189,14 @@ struct ModelTrackerOptions {
   // frames it is measured at rest, until one has at most `rest_turn_clear` of them; a rest whose
   // clearest frame has more than `rest_turn_covered` is left as it is: something not modelled, a
   // hand, over it), when that lowers the difference to `rest_turn_ratio` of what it was, by at
-  // most `rest_turn_max_deg`. The
-  // tracking itself goes on from its own poses: only the reported samples turn.
+  // most `rest_turn_max_deg`. The tracking itself goes on from its own poses: only the reported
+  // samples turn.
   bool rest_turn = true;
   int rest_turn_every = 6;
   double rest_turn_clear = 0.02;
   double rest_turn_covered = 0.05;
   double rest_turn_ratio = 0.95;
   double rest_turn_max_deg = 11.5;
-  double settle_visible_fraction = 0.7;  // of its silhouette: a start less visible is kept as it is
-  double settle_contrast_gain = 0.03;  // a settled start is taken when it stands out this much more
-  double settle_depth_contrast_gain = 0.1;  // and moved in depth, this much more
   // Threads scoring a lost part's candidate poses (0: one per core); the tracks are the same
   // whatever the number.
   int search_threads = 0;
