@@ -33,6 +33,16 @@ PrintDifference print_difference(const cv::Mat& image, const PinholeIntrinsics& 
                                  const RenderMesh& mesh, const Pose& camera_T_part, const OcclusionMap& occlusion,
                                  int part, double outlier = 0.0);
 
+// A frame kept for a part's print to be fitted to later: the frame, what hid the part in it, the
+// pose it was looked at, and the fraction of the pixels it showed in that differed (2: none kept).
+struct PrintShot {
+  int frame = -1;
+  cv::Mat image;
+  OcclusionMap map;
+  Pose camera_T_part = Pose::Identity();
+  double outliers = 2.0;
+};
+
 // Turns `camera_T_part` about the world's vertical through the part's `centre` (part frame) while
 // its print differs less from `image` (appearance_error), steps halving from `turn` down to
 // `min_turn` (rad). `error_before` and `error`: the print's difference at the start and at the fit

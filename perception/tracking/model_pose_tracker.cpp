@@ -22,6 +22,7 @@
 #include "perception/tracking/carrier_top.h"
 #include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/light_correction.h"
+#include "perception/tracking/placement_witness.h"
 #include "perception/tracking/rest_hold.h"
 #include "perception/tracking/surface_flow.h"
 
@@ -82,14 +83,8 @@ struct ModelPoseTracker::State {
   PoseTracks tracks;
   // Per part, the clearest frame of its current rest so far (the fewest pixels unlike its
   // print), to turn that rest by (ModelTrackerOptions::rest_turn).
-  struct RestShot {
-    int frame = -1;
-    cv::Mat image;
-    OcclusionMap map;
-    Pose camera_T_part = Pose::Identity();
-    double outliers = 2.0;  // fraction of the pixels it shows in
-  };
-  std::vector<RestShot> rest_shots;
+  std::vector<PrintShot> rest_shots;
+  std::vector<PlacementWitness> witnesses;  // each part's last placement, against its track
   bool started = false;  // the init frame has been seen
 };
 
@@ -152,6 +147,7 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.unseen.assign(models_.size(), 0);
   s.moved_for.assign(models_.size(), 0);
   s.rest_shots.assign(models_.size(), {});
+  s.witnesses.assign(models_.size(), {});
   s.measured_at.assign(models_.size(), -1);
   s.holds.assign(models_.size(), RestHold());
   s.rest_world.assign(models_.size(), std::nullopt);
@@ -281,6 +277,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     for (size_t k = 0; k < models_.size(); ++k) s.centres[k].assign(3, centre_in_image(k, s.camera_T_part[k]));
     for (size_t k = 0; k < models_.size(); ++k) s.rest_rotation.push_back(s.world_T_camera.linear() * s.camera_T_part[k].linear());
     for (size_t k = 0; k < models_.size(); ++k) s.rest_world[k] = s.world_T_camera * s.camera_T_part[k];
+    for (size_t k = 0; k < models_.size(); ++k) s.witnesses[k].place(frame, s.camera_T_part[k]);
     for (size_t k = 0; k < models_.size(); ++k)
       s.reference_contrast[k] = track_region(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map,
                                              static_cast<int>(k), options_.region).contrast;
@@ -558,6 +555,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     if (static_cast<int>(s.recent.size()) > options_.follow_back_frames) s.recent.pop_front();
   }
   if (options_.rest_turn) watch_rest_turns(frame, image, map, resting);
+  if (options_.witness_placements) watch_placements(frame, image);
   const OcclusionMap after = occlusion_map();
   for (size_t k = 0; k < models_.size(); ++k)
     if (learn[k])
@@ -587,6 +585,11 @@ std::vector<size_t> ModelPoseTracker::apply_corrections(int frame, const cv::Mat
   }
   for (const size_t k : corrected) {
     const Pose world_T_object = s.world_T_camera * s.camera_T_part[k];
+    // The last placement judged by the frames so far; this one by those from here.
+    if (options_.witness_placements) {
+      close_witness(k);
+      s.witnesses[k].place(frame, s.camera_T_part[k]);
+    }
     // At rest where it was put, as at the start: nothing of its last motion, rest or ride goes on.
     s.centres[k].assign(3, centre_in_image(k, s.camera_T_part[k]));
     s.previous[k].reset();
@@ -1098,7 +1101,7 @@ void ModelPoseTracker::watch_rest_turns(int frame, const cv::Mat& image, const O
                                         const std::vector<bool>& resting) {
   State& s = *state_;
   for (size_t k = 0; k < models_.size(); ++k) {
-    State::RestShot& shot = s.rest_shots[k];
+    PrintShot& shot = s.rest_shots[k];
     // Its rest is over (it moved, or was found or placed elsewhere): turned now.
     if (shot.frame >= 0 && !same_rest(s.camera_T_part[k], shot.camera_T_part)) turn_rest(k);
     if (s.measured_at[k] != frame || !resting[k] || frame % std::max(options_.rest_turn_every, 1) != 0 ||
@@ -1114,7 +1117,7 @@ void ModelPoseTracker::watch_rest_turns(int frame, const cv::Mat& image, const O
 
 void ModelPoseTracker::turn_rest(size_t k) {
   State& s = *state_;
-  const State::RestShot shot = std::move(s.rest_shots[k]);
+  const PrintShot shot = std::move(s.rest_shots[k]);
   s.rest_shots[k] = {};
   // Something not modelled over it (a hand) even in its clearest frame: a turn would fit that too.
   if (shot.frame < 0 || shot.outliers > options_.rest_turn_covered) return;
@@ -1134,11 +1137,69 @@ void ModelPoseTracker::turn_rest(size_t k) {
     }
 }
 
+void ModelPoseTracker::watch_placements(int frame, const cv::Mat& image) {
+  State& s = *state_;
+  for (size_t k = 0; k < models_.size(); ++k) {
+    PlacementWitness& w = s.witnesses[k];
+    if (!w.open) continue;
+    const Eigen::Vector3d centre = contours_[k]->centre();
+    if ((s.camera_T_part[k] * centre - w.camera_T_placed * centre).norm() > contours_[k]->radius()) {
+      close_witness(k);
+      continue;
+    }
+    if (frame % std::max(options_.rest_turn_every, 1) != 0) continue;
+    // Both poses judged alike: the part itself drawn at neither.
+    const OcclusionMap map = occlusion_map(static_cast<int>(k));
+    auto outliers = [&](const Pose& T) {
+      const PrintDifference d = print_difference(image, s.intrinsics, s.world_T_camera, models_[k].mesh, T, map,
+                                                 static_cast<int>(k), options_.start_cover_difference);
+      return d.pixels < kRestTurnPixels ? -1.0 : static_cast<double>(d.outliers) / d.pixels;
+    };
+    const double placed = outliers(w.camera_T_placed);
+    if (placed < 0) continue;
+    const double tracked = outliers(s.camera_T_part[k]);
+    w.look(frame, image, map, placed, tracked < 0 ? 1.0 : tracked, options_.rest_turn_covered);
+  }
+}
+
+void ModelPoseTracker::close_witness(size_t k) {
+  State& s = *state_;
+  PlacementWitness& w = s.witnesses[k];
+  if (!w.open) return;
+  w.open = false;
+  if (!w.borne_out(options_.rest_turn_covered, options_.witness_margin)) return;
+  // Turned by its print in its clearest frame, as a rest is (turn_rest).
+  Pose placed = s.world_T_camera * w.camera_T_placed;
+  const PrintShot& shot = w.clearest;
+  if (options_.rest_turn) {
+    const PrintTurn fit = turn_to_print(shot.image, s.intrinsics, s.world_T_camera, models_[k].mesh, shot.camera_T_part,
+                                        contours_[k]->centre(), shot.map, static_cast<int>(k));
+    const Pose turned = s.world_T_camera * fit.camera_T_part;
+    if (fit.error >= 0 && fit.error <= options_.rest_turn_ratio * fit.error_before &&
+        Eigen::AngleAxisd(turned.linear().transpose() * placed.linear()).angle() <= options_.rest_turn_max_deg * M_PI / 180)
+      placed = turned;
+  }
+  // From the placement to the last frame it was seen clear at, and on while the track stays
+  // where it was then (the hand's pull over, the part still there).
+  auto& samples = s.tracks.samples[k];
+  const int last = std::min(w.last_clear, static_cast<int>(samples.size()) - 1);
+  std::optional<Pose> tracked_then;
+  for (int f = last; f >= w.from && !tracked_then; --f)
+    if (samples[f].valid) tracked_then = samples[f].pose;
+  for (int f = w.from; f < static_cast<int>(samples.size()); ++f) {
+    if (!samples[f].valid) continue;
+    if (f > last && !(tracked_then && same_rest(samples[f].pose, *tracked_then))) break;
+    samples[f].pose = placed;
+  }
+  w.clearest = {};
+}
+
 PoseTracks ModelPoseTracker::finish() {
   if (!state_) throw std::logic_error("ModelPoseTracker::finish before start");
   // The rests still going on at the end.
   if (options_.rest_turn)
     for (size_t k = 0; k < models_.size(); ++k) turn_rest(k);
+  for (size_t k = 0; k < models_.size(); ++k) close_witness(k);
   return state_->tracks;
 }
 

@@ -197,6 +197,14 @@ struct ModelTrackerOptions {
   double rest_turn_covered = 0.05;
   double rest_turn_ratio = 0.95;
   double rest_turn_max_deg = 11.5;
+  // A placement (the start, or the operator's placing a part again) is looked at every
+  // `rest_turn_every` frames until the track has taken the part farther than its radius from
+  // it (placement_witness.h): its print there clear (at most `rest_turn_covered` of the pixels
+  // differing) in a frame where the tracked pose's differs by `witness_margin` more, the samples
+  // from the placement to the last frame it was clear in (and on while the track stays where it
+  // was then) are reported at the placement, turned as a rest is.
+  bool witness_placements = true;
+  double witness_margin = 0.05;
   // Threads scoring a lost part's candidate poses (0: one per core); the tracks are the same
   // whatever the number.
   int search_threads = 0;
@@ -279,6 +287,10 @@ private:
   // The clearest frame of each part's current rest, and that rest turned by its print once over.
   void watch_rest_turns(int frame, const cv::Mat& image, const OcclusionMap& map, const std::vector<bool>& resting);
   void turn_rest(size_t k);
+  // Each placement against its track (ModelTrackerOptions::witness_placements), and the
+  // placement's rest reported once part k's witness closes.
+  void watch_placements(int frame, const cv::Mat& image);
+  void close_witness(size_t k);
   // Part k, come to rest in `frame`: the kept frames before its `seen_for` still ones (three;
   // one for a part placed again) reported at the rest while they show it there (date_rests_back).
   // Returns the earliest frame it is now reported at the rest in.

@@ -371,6 +371,47 @@ TEST(ModelTracker, RestsAreTurnedTheWayTheirPrintsShow) {
   EXPECT_GT(kept.median_rotation_error_deg, 2.0) << "the outline alone turned the rests right: the test shows nothing";
 }
 
+// The first grasp of part `id` after `frame`; null when there is none.
+const ContactEvent* grasp_after(const Demonstration& d, const std::string& id, int frame = -1) {
+  const auto part = std::find(d.object_ids.begin(), d.object_ids.end(), id) - d.object_ids.begin();
+  for (const auto& e : d.events)
+    if (e.object == part && e.type == EventType::Grasp && e.frame > frame) return &e;
+  return nullptr;
+}
+
+// waiter_0 without markers: the demonstrator's forearm hides the sugar box in the start frame, so
+// the colours learnt there are the arm's and its outline follows the arm 39 mm off (and 26
+// degrees turned) until it is lifted at 25. From frame 12 the frames show it clear where it was
+// placed (witness_placements): its rest until the lift is reported there, within 2 mm and a
+// degree of the truth. The events stay as they are.
+TEST(ModelTracker, AStartTheHandCoveredIsReportedWhereTheFramesAfterShowIt) {
+  const WaiterVideo video("witness");
+  const Demonstration truth = load_demonstration(video.s.truth);
+  ModelTrackerOptions tracked_only;
+  tracked_only.witness_placements = false;
+  const Demonstration witnessed = video.extract(), tracked = video.extract(tracked_only);
+  EXPECT_EQ(evaluate_demonstration(witnessed, truth, 2).matched, evaluate_demonstration(tracked, truth, 2).matched);
+  const ContactEvent* expected = grasp_after(truth, "YCBV_03");
+  ASSERT_TRUE(expected);
+  const auto sugar = static_cast<size_t>(expected->object);
+  auto errors = [&](const Demonstration& d) {
+    const ContactEvent* e = grasp_after(d, "YCBV_03");
+    EXPECT_TRUE(e && std::abs(e->frame - expected->frame) <= 2) << "the sugar box's first grasp was not detected";
+    if (!e) return std::pair{1e9, 1e9};
+    const Pose& a = e->poses[sugar];
+    const Pose& b = expected->poses[sugar];
+    return std::pair{1e3 * (a.translation() - b.translation()).norm(),
+                     Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle() * 180 / M_PI};
+  };
+  const auto [placed_mm, placed_deg] = errors(witnessed);
+  const auto [tracked_mm, tracked_deg] = errors(tracked);
+  EXPECT_LT(placed_mm, 2.0);
+  EXPECT_LT(placed_deg, 1.0);
+  EXPECT_GT(tracked_mm, 20.0) << "tracked alone, the start rest was right: the test shows nothing";
+  std::cout << "sugar box's start rest: " << placed_mm << " mm, " << placed_deg << " deg (tracked alone: " << tracked_mm
+            << " mm, " << tracked_deg << " deg)\n";
+}
+
 // waiter_0 without markers: the sugar box, lifted fast off the tray (its first frame up 37 px,
 // before the grey floor instead of the tray) and put on the shelf's top 25 cm higher in the
 // image, is followed through the carry (near_used_fraction: taken by the search only on a find
