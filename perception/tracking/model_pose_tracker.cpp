@@ -1186,11 +1186,19 @@ void ModelPoseTracker::close_witness(size_t k) {
   std::optional<Pose> tracked_then;
   for (int f = last; f >= w.from && !tracked_then; --f)
     if (samples[f].valid) tracked_then = samples[f].pose;
+  int until = w.from;
   for (int f = w.from; f < static_cast<int>(samples.size()); ++f) {
     if (!samples[f].valid) continue;
     if (f > last && !(tracked_then && same_rest(samples[f].pose, *tracked_then))) break;
     samples[f].pose = placed;
+    until = f;
   }
+  // The operator is told, as of a start warned about: the track is not what is reported there.
+  const double off_mm = tracked_then ? 1e3 * (tracked_then->translation() - placed.translation()).norm() : 0.0;
+  warnings_.push_back(init_source_ + ": part '" + models_[k].id + "', frame " + std::to_string(shot.frame) +
+                      ": shows it where it was placed at frame " + std::to_string(w.from) + " (its track " +
+                      std::to_string(std::lround(off_mm)) + " mm off there, pulled by something in front of it): "
+                      "frames " + std::to_string(w.from) + "-" + std::to_string(until) + " are reported at the placement");
   w.clearest = {};
 }
 
