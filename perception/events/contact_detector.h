@@ -40,6 +40,9 @@ struct ContactDetectorOptions {
   // videos (12 hidden releases, ur5_workbench and iiwa_shelf) the release lay at 0.50-0.78 of
   // the gap, median 0.62 (docs/perception.md).
   double hidden_event_fraction = 0.62;
+  // Unless it was last seen where it comes to rest (within move_translation of the rest's place):
+  // then it was set down as the gap began (a + 1).
+  bool set_down_where_seen = true;
 };
 
 // A part moving between two rests: `start` is the last frame at rest before, `end` the first

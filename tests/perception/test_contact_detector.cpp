@@ -119,6 +119,28 @@ TEST(ContactDetector, EventsHiddenByTheHandLieInsideTheGap) {
   EXPECT_EQ(a.carries[0].start, 27 - 8);  // 0.62 of the 13 frames hidden before it was seen moving
 }
 
+TEST(ContactDetector, APartSeenWhereItComesToRestBeforeTheGapWasSetDownAsItBegan) {
+  PoseTracks t = make_tracks(100, {at(0, 0, 0.8)}, {{0, 20, 60, at(0.5, 0.2, 0.8)}});
+  // Last seen at 49 8 mm from where it rests (its estimate turned 9 degrees by the hand over
+  // it), hidden until 66: set down at 50, not 0.62 into the gap.
+  for (int f = 50; f < 66; ++f) t.samples[0][f].valid = false;
+  t.samples[0][48].pose = at(0.49, 0.19, 0.81, 0.0);
+  t.samples[0][49].pose = at(0.5, 0.2, 0.808, 9.0 * M_PI / 180);
+  ContactAnalysis a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_EQ(a.carries[0].end, 50);
+  ContactDetectorOptions inside;
+  inside.set_down_where_seen = false;
+  a = detect_contacts(t, inside);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_EQ(a.carries[0].end, 49 + 11);
+  // 3 cm away when last seen: still 0.62 into the gap.
+  t.samples[0][49].pose = at(0.47, 0.2, 0.808);
+  a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 1u);
+  EXPECT_EQ(a.carries[0].end, 49 + 11);
+}
+
 TEST(ContactDetector, AnEstimateThatJumpsAsTheHandArrivesIsStillTheRest) {
   // The hand arriving turns the estimate 3 degrees at 17 (waiter_0's sugar box without
   // markers); it sits there until the hand hides the part at 20 and is seen moving from 30 on.
