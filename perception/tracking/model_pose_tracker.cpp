@@ -402,6 +402,14 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
                                  : track_region(image, s.intrinsics, *contours_[k], s.colors[k], start, map, part,
                                                 options_.region, resting[k], points[k]);
     const bool mostly_hidden = resting[k] && r.hidden_lines > options_.rest_hidden_fraction * r.lines;
+    // Lost at rest (not in a carry) and tracked on from there to elsewhere: that is a find, and
+    // is taken on a find's evidence; a frame's pull from the stale pose is not (the stale pose
+    // marks no motion to follow). Refused, it counts as not seen there, its lines as measured.
+    if (!riding && s.unseen[k] > 0 && s.moved_for[k] < 3 && is_seen(r) && !found_elsewhere(r)) {
+      const Eigen::Vector3d c = contours_[k]->centre();
+      if ((r.camera_T_part * c - s.camera_T_part[k] * c).norm() > options_.stale_jump_radii * contours_[k]->radius())
+        r.contrast = -1.0;
+    }
     if (!is_seen(r) || mostly_hidden) {
       if (may_hold) {
         // Not looked for elsewhere while held: the part moving, or the hand carrying it, may
@@ -441,8 +449,10 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       };
       if (const RegionFrameResult found_again = search(image, part, map);
           (found_elsewhere(found_again) && !(resting[k] && s.seen_last[k] && beyond_radius(found_again.camera_T_part))) ||
-          found_near(found_again))
+          found_near(found_again)) {
         r = found_again;
+        if (std::getenv("DBG_FIND")) std::fprintf(stderr, "FIND %s frame %d search\n", models_[k].id.c_str(), frame);
+      }
     }
     // Still not found: perhaps put down where it could rest; taken once found at the same place
     // in two frames in a row.
@@ -457,6 +467,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
         if (moved.norm() < options_.rest_confirm_mm * 1e-3) {
           r = *found;
           found_resting = true;
+          if (std::getenv("DBG_FIND")) std::fprintf(stderr, "FIND %s frame %d rest search\n", models_[k].id.c_str(), frame);
         }
       }
       s.rest_find[k] = found ? std::optional<Pose>(found->camera_T_part) : std::nullopt;

@@ -316,15 +316,15 @@ TEST(ModelTracker, FollowsThePartsOfAVideoWithoutMarkers) {
   fs::remove_all(dir);
 }
 
-// waiter_0 rendered without markers (with `adjust` applied to its options), extracted with
-// the model tracker as `extract` does it; the folder is removed with it.
-struct WaiterVideo {
+// waiter_0 rendered without markers (with `adjust` applied to its options: another task, a
+// condition), extracted with the model tracker as `extract` does it; the folder is removed with it.
+struct TaskVideo {
   fs::path dir;
   SynthOutput s;
   MarkerScene scene;
   ExtractionOptions eo;
 
-  explicit WaiterVideo(const std::string& name, const std::function<void(SynthOptions&)>& adjust = {})
+  explicit TaskVideo(const std::string& name, const std::function<void(SynthOptions&)>& adjust = {})
       : dir(fs::temp_directory_path() / ("demoplan_model_tracker_" + name + "_" + std::to_string(::getpid()))) {
     SynthOptions o;
     o.data_dir = DEMOPLAN_DATA_DIR;
@@ -336,7 +336,7 @@ struct WaiterVideo {
     scene = load_marker_scene(s.scene);
     eo.scene = marker_scene_world(scene, s.scene, DEMOPLAN_DATA_DIR);
   }
-  ~WaiterVideo() { fs::remove_all(dir); }
+  ~TaskVideo() { fs::remove_all(dir); }
   std::unique_ptr<PoseTracker> tracker(const ModelTrackerOptions& options) const {
     return make_model_tracker(scene, s.scene, DEMOPLAN_DATA_DIR, load_tracker_init(s.init), s.init, options);
   }
@@ -358,7 +358,7 @@ const ContactEvent* release_after(const Demonstration& d, const std::string& id,
 // rest turned by its print (rest_turn) is within a degree, where, tracked alone, half of them are
 // more than 2 degrees off. Nothing else changes: the same events, the same places.
 TEST(ModelTracker, RestsAreTurnedTheWayTheirPrintsShow) {
-  const WaiterVideo video("waiter_turn");
+  const TaskVideo video("waiter_turn");
   const Demonstration truth = load_demonstration(video.s.truth);
   ModelTrackerOptions outline_only;
   outline_only.rest_turn = false;
@@ -385,7 +385,7 @@ const ContactEvent* grasp_after(const Demonstration& d, const std::string& id, i
 // placed (witness_placements): its rest until the lift is reported there, within 2 mm and a
 // degree of the truth, and the operator is told so. The events stay as they are.
 TEST(ModelTracker, AStartTheHandCoveredIsReportedWhereTheFramesAfterShowIt) {
-  const WaiterVideo video("witness");
+  const TaskVideo video("witness");
   const Demonstration truth = load_demonstration(video.s.truth);
   ModelTrackerOptions tracked_only;
   tracked_only.witness_placements = false;
@@ -420,6 +420,37 @@ TEST(ModelTracker, AStartTheHandCoveredIsReportedWhereTheFramesAfterShowIt) {
             << " mm, " << tracked_deg << " deg)\n";
 }
 
+// shelf_1 without markers, a pole passing in front of the carried parts: the mustard, set down
+// at 48, is lost at its rest from 54 as the hand passes over it to the cracker box, and the
+// frames tracked on from its rest pull it 70-215 mm onto the cracker box's edge at a contrast
+// just over the tracked bar (0.60 against 0.59 at 68). Lost at rest, it is taken elsewhere only
+// on a find's evidence (stale_jump_radii): its release rest stays within 5 mm of the truth's, where
+// taken on the tracked bar it was 192 mm off. The events stay as they are.
+TEST(ModelTracker, APartLostAtRestIsNotPulledAwayFromItByAFrameTrackedOn) {
+  const TaskVideo video("stale", [](SynthOptions& o) {
+    o.task = "shelf_1";
+    o.robot = "panda";
+    o.occlusion = true;
+  });
+  const Demonstration truth = load_demonstration(video.s.truth);
+  ModelTrackerOptions pulled;
+  pulled.stale_jump_radii = 1e9;
+  const Demonstration refused = video.extract(), taken = video.extract(pulled);
+  EXPECT_EQ(evaluate_demonstration(refused, truth, 2).matched, evaluate_demonstration(taken, truth, 2).matched);
+  const ContactEvent* expected = release_after(truth, "YCBV_05");
+  ASSERT_TRUE(expected);
+  const auto mustard = static_cast<size_t>(expected->object);
+  auto error_mm = [&](const Demonstration& d) {
+    const ContactEvent* e = release_after(d, "YCBV_05");
+    EXPECT_TRUE(e && std::abs(e->frame - expected->frame) <= 2) << "the mustard's release was not detected";
+    return e ? 1e3 * (e->poses[mustard].translation() - expected->poses[mustard].translation()).norm() : 1e9;
+  };
+  const double refused_mm = error_mm(refused), taken_mm = error_mm(taken);
+  EXPECT_LT(refused_mm, 5.0);
+  EXPECT_GT(taken_mm, 50.0) << "taken on the tracked bar, the rest was right: the test shows nothing";
+  std::cout << "the mustard's release rest: " << refused_mm << " mm (pulled away: " << taken_mm << " mm)\n";
+}
+
 // waiter_0 without markers: the sugar box, lifted fast off the tray (its first frame up 37 px,
 // before the grey floor instead of the tray) and put on the shelf's top 25 cm higher in the
 // image, is followed through the carry (near_used_fraction: taken by the search only on a find
@@ -429,7 +460,7 @@ TEST(ModelTracker, AStartTheHandCoveredIsReportedWhereTheFramesAfterShowIt) {
 // truth's release (date_rests_back; without, the release is dated 107). The cracker box laid
 // down at 57 has its outline dragged by the withdrawing hand until 60: dated at 57 too.
 TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelfAndItsReleaseDated) {
-  const WaiterVideo video("waiter");
+  const TaskVideo video("waiter");
   const Demonstration d = video.extract();
   const Demonstration truth = load_demonstration(video.s.truth);
   const ContactEvent* detected = release_after(d, "YCBV_03", 90);
@@ -464,7 +495,7 @@ TEST(ModelTracker, APartLiftedFastOffATrayIsFollowedToTheShelfAndItsReleaseDated
 // camera) is measured 54 mm off along its line of sight, as small parts are that far away; with
 // the tray followed as a part (synth gives it by its box) its rest settles on the tray's top.
 TEST(ModelTracker, APartSetOnATrayRestsOnTheTraysTop) {
-  const WaiterVideo video("tray");
+  const TaskVideo video("tray");
   const auto tray = std::find_if(video.scene.objects.begin(), video.scene.objects.end(), [](auto& o) { return !o.planning; });
   ASSERT_NE(tray, video.scene.objects.end()) << "synth --no-markers gives the tray as a part";
   ASSERT_TRUE(tray->box);
@@ -493,7 +524,7 @@ TEST(ModelTracker, APartSetOnATrayRestsOnTheTraysTop) {
 // occluder and laid on its side on the table (57): the rest search finds it there only when it
 // tries the part's other faces.
 TEST(ModelTracker, ABoxLaidOnItsSideWhileHiddenIsFoundThere) {
-  const WaiterVideo video("side", [](SynthOptions& o) { o.occlusion = true; });
+  const TaskVideo video("side", [](SynthOptions& o) { o.occlusion = true; });
   const Demonstration truth = load_demonstration(video.s.truth);
   const ContactEvent* first_release = release_after(truth, "YCBV_02");
   ASSERT_TRUE(first_release);
@@ -519,7 +550,7 @@ TEST(ModelTracker, ABoxLaidOnItsSideWhileHiddenIsFoundThere) {
 // sugar box is taken though its rest on the tray was tracked 13 degrees off level
 // (rest_tilt_from_level; else its release is dated at 112, truth 104).
 TEST(ModelTracker, APartSetDownInFrontOfAnotherWhileHidden) {
-  const WaiterVideo video("front", [](SynthOptions& o) { o.lighting = 0.3; });
+  const TaskVideo video("front", [](SynthOptions& o) { o.lighting = 0.3; });
   const Demonstration truth = load_demonstration(video.s.truth);
   const ContactEvent* set_down = release_after(truth, "YCBV_03", 95);
   ASSERT_TRUE(set_down);
@@ -727,7 +758,7 @@ TEST(ModelTracker, WarnsOfAStartSomethingNotModelledCovers) {
 // CLI's one extraction, the GUI's second and bench_extraction's twentieth agree; waiter_0 in
 // changing light, extracted twice in one process, had 11 and then 6 of its 12 events right).
 TEST(ModelTracker, TracksTheSameWhateverStateOpenCVsRandomGeneratorIsIn) {
-  const WaiterVideo video("rng", [](SynthOptions& o) { o.lighting = 0.3; });
+  const TaskVideo video("rng", [](SynthOptions& o) { o.lighting = 0.3; });
   cv::VideoCapture capture(video.s.video);
   std::vector<cv::Mat> frames(4);
   for (auto& f : frames) ASSERT_TRUE(capture.read(f));
