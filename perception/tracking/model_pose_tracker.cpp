@@ -1158,7 +1158,10 @@ void ModelPoseTracker::watch_placements(int frame, const cv::Mat& image) {
       close_witness(k);
       continue;
     }
-    if (frame % std::max(options_.rest_turn_every, 1) != 0) continue;
+    // Tracked where it was placed: nothing to tell apart (most parts, most frames).
+    if (frame % std::max(options_.rest_turn_every, 1) != 0 ||
+        same_rest(s.world_T_camera * s.camera_T_part[k], s.world_T_camera * w.camera_T_placed))
+      continue;
     // Both poses judged alike: the part itself drawn at neither.
     const OcclusionMap map = occlusion_map(static_cast<int>(k));
     auto outliers = [&](const Pose& T) {

@@ -345,12 +345,15 @@ struct TaskVideo {
   }
 };
 
-// The first release of part `id` after `frame`; null when there is none.
-const ContactEvent* release_after(const Demonstration& d, const std::string& id, int frame = -1) {
+// The first event of `type` of part `id` after `frame`; null when there is none.
+const ContactEvent* event_after(const Demonstration& d, const std::string& id, EventType type, int frame = -1) {
   const auto part = std::find(d.object_ids.begin(), d.object_ids.end(), id) - d.object_ids.begin();
   for (const auto& e : d.events)
-    if (e.object == part && e.type == EventType::Release && e.frame > frame) return &e;
+    if (e.object == part && e.type == type && e.frame > frame) return &e;
   return nullptr;
+}
+const ContactEvent* release_after(const Demonstration& d, const std::string& id, int frame = -1) {
+  return event_after(d, id, EventType::Release, frame);
 }
 
 // waiter_0 without markers: a box seen from the front changes its outline little as it turns
@@ -369,14 +372,6 @@ TEST(ModelTracker, RestsAreTurnedTheWayTheirPrintsShow) {
   EXPECT_NEAR(turned.median_translation_error_mm, kept.median_translation_error_mm, 0.1);
   EXPECT_LT(turned.median_rotation_error_deg, 1.0);
   EXPECT_GT(kept.median_rotation_error_deg, 2.0) << "the outline alone turned the rests right: the test shows nothing";
-}
-
-// The first grasp of part `id` after `frame`; null when there is none.
-const ContactEvent* grasp_after(const Demonstration& d, const std::string& id, int frame = -1) {
-  const auto part = std::find(d.object_ids.begin(), d.object_ids.end(), id) - d.object_ids.begin();
-  for (const auto& e : d.events)
-    if (e.object == part && e.type == EventType::Grasp && e.frame > frame) return &e;
-  return nullptr;
 }
 
 // waiter_0 without markers: the demonstrator's forearm hides the sugar box in the start frame, so
@@ -399,11 +394,11 @@ TEST(ModelTracker, AStartTheHandCoveredIsReportedWhereTheFramesAfterShowIt) {
            w.find("frames 0-25 are reported at the placement") != std::string::npos;
   }));
   EXPECT_EQ(evaluate_demonstration(witnessed, truth, 2).matched, evaluate_demonstration(tracked, truth, 2).matched);
-  const ContactEvent* expected = grasp_after(truth, "YCBV_03");
+  const ContactEvent* expected = event_after(truth, "YCBV_03", EventType::Grasp);
   ASSERT_TRUE(expected);
   const auto sugar = static_cast<size_t>(expected->object);
   auto errors = [&](const Demonstration& d) {
-    const ContactEvent* e = grasp_after(d, "YCBV_03");
+    const ContactEvent* e = event_after(d, "YCBV_03", EventType::Grasp);
     EXPECT_TRUE(e && std::abs(e->frame - expected->frame) <= 2) << "the sugar box's first grasp was not detected";
     if (!e) return std::pair{1e9, 1e9};
     const Pose& a = e->poses[sugar];
