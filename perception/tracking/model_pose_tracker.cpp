@@ -449,10 +449,8 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       };
       if (const RegionFrameResult found_again = search(image, part, map);
           (found_elsewhere(found_again) && !(resting[k] && s.seen_last[k] && beyond_radius(found_again.camera_T_part))) ||
-          found_near(found_again)) {
+          found_near(found_again))
         r = found_again;
-        if (std::getenv("DBG_FIND")) std::fprintf(stderr, "FIND %s frame %d search\n", models_[k].id.c_str(), frame);
-      }
     }
     // Still not found: perhaps put down where it could rest; taken once found at the same place
     // in two frames in a row.
@@ -467,7 +465,6 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
         if (moved.norm() < options_.rest_confirm_mm * 1e-3) {
           r = *found;
           found_resting = true;
-          if (std::getenv("DBG_FIND")) std::fprintf(stderr, "FIND %s frame %d rest search\n", models_[k].id.c_str(), frame);
         }
       }
       s.rest_find[k] = found ? std::optional<Pose>(found->camera_T_part) : std::nullopt;
