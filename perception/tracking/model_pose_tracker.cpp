@@ -1123,18 +1123,26 @@ void ModelPoseTracker::watch_rest_turns(int frame, const cv::Mat& image, const O
   }
 }
 
+std::optional<Pose> ModelPoseTracker::turned_by_print(size_t k, const PrintShot& shot) const {
+  const State& s = *state_;
+  const PrintTurn fit = turn_to_print(shot.image, s.intrinsics, s.world_T_camera, models_[k].mesh, shot.camera_T_part,
+                                      contours_[k]->centre(), shot.map, static_cast<int>(k));
+  const Pose before = s.world_T_camera * shot.camera_T_part, after = s.world_T_camera * fit.camera_T_part;
+  if (fit.error < 0 || fit.error > options_.rest_turn_ratio * fit.error_before ||
+      Eigen::AngleAxisd(after.linear().transpose() * before.linear()).angle() > options_.rest_turn_max_deg * M_PI / 180)
+    return std::nullopt;
+  return after;
+}
+
 void ModelPoseTracker::turn_rest(size_t k) {
   State& s = *state_;
   const PrintShot shot = std::move(s.rest_shots[k]);
   s.rest_shots[k] = {};
   // Something not modelled over it (a hand) even in its clearest frame: a turn would fit that too.
   if (shot.frame < 0 || shot.outliers > options_.rest_turn_covered) return;
-  const PrintTurn fit = turn_to_print(shot.image, s.intrinsics, s.world_T_camera, models_[k].mesh, shot.camera_T_part,
-                                      contours_[k]->centre(), shot.map, static_cast<int>(k));
-  const Pose before = s.world_T_camera * shot.camera_T_part, after = s.world_T_camera * fit.camera_T_part;
-  if (fit.error < 0 || fit.error > options_.rest_turn_ratio * fit.error_before ||
-      Eigen::AngleAxisd(after.linear().transpose() * before.linear()).angle() > options_.rest_turn_max_deg * M_PI / 180)
-    return;
+  const std::optional<Pose> turned = turned_by_print(k, shot);
+  if (!turned) return;
+  const Pose before = s.world_T_camera * shot.camera_T_part, after = *turned;
   // Every sample of that rest: the frames around the shot reported at the rest's pose.
   auto& samples = s.tracks.samples[k];
   for (const int direction : {-1, 1})
@@ -1156,8 +1164,7 @@ void ModelPoseTracker::watch_placements(int frame, const cv::Mat& image) {
       continue;
     }
     // Tracked where it was placed: nothing to tell apart (most parts, most frames).
-    if (frame % std::max(options_.rest_turn_every, 1) != 0 ||
-        same_rest(s.world_T_camera * s.camera_T_part[k], s.world_T_camera * w.camera_T_placed))
+    if (frame % std::max(options_.rest_turn_every, 1) != 0 || same_rest(s.camera_T_part[k], w.camera_T_placed))
       continue;
     // Both poses judged alike: the part itself drawn at neither.
     const OcclusionMap map = occlusion_map(static_cast<int>(k));
@@ -1182,14 +1189,8 @@ void ModelPoseTracker::close_witness(size_t k) {
   // Turned by its print in its clearest frame, as a rest is (turn_rest).
   Pose placed = s.world_T_camera * w.camera_T_placed;
   const PrintShot& shot = w.clearest;
-  if (options_.rest_turn) {
-    const PrintTurn fit = turn_to_print(shot.image, s.intrinsics, s.world_T_camera, models_[k].mesh, shot.camera_T_part,
-                                        contours_[k]->centre(), shot.map, static_cast<int>(k));
-    const Pose turned = s.world_T_camera * fit.camera_T_part;
-    if (fit.error >= 0 && fit.error <= options_.rest_turn_ratio * fit.error_before &&
-        Eigen::AngleAxisd(turned.linear().transpose() * placed.linear()).angle() <= options_.rest_turn_max_deg * M_PI / 180)
-      placed = turned;
-  }
+  if (options_.rest_turn)
+    if (const std::optional<Pose> turned = turned_by_print(k, shot)) placed = *turned;
   // From the placement to the last frame it was seen clear at, and on while the track stays
   // where it was then (the hand's pull over, the part still there).
   auto& samples = s.tracks.samples[k];

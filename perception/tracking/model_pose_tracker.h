@@ -40,6 +40,8 @@
 
 namespace demoplan::perception {
 
+struct PrintShot;  // appearance_error.h
+
 struct ModelPart {
   std::string id;
   bool planning = true;
@@ -293,6 +295,9 @@ private:
   // The clearest frame of each part's current rest, and that rest turned by its print once over.
   void watch_rest_turns(int frame, const cv::Mat& image, const OcclusionMap& map, const std::vector<bool>& resting);
   void turn_rest(size_t k);
+  // Part k at `shot`'s pose turned about the vertical by its print in that frame (world), when
+  // the print differs at most rest_turn_ratio as much after, by at most rest_turn_max_deg.
+  std::optional<Pose> turned_by_print(size_t k, const PrintShot& shot) const;
   // Each placement against its track (ModelTrackerOptions::witness_placements), and the
   // placement's rest reported once part k's witness closes.
   void watch_placements(int frame, const cv::Mat& image);
