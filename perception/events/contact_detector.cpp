@@ -314,13 +314,13 @@ std::vector<MotionInterval> detect_motions(const std::vector<PoseSample>& sample
       int k = j - 1;
       while (k > 0 && frames[moving[k]] - frames[moving[k - 1]] > 1) --k;
       const int hidden = frames[moving[j]] - frames[moving[k]];
-      if (hidden > 1) cur.end = frames[moving[k]] + static_cast<int>(std::lround(o.hidden_event_fraction * hidden));
       // Seen before the gap where it comes to rest already (its place within the move threshold
       // of the rest's; not its turn: a hand over it turns its estimate, tunnel_0 with the
       // occluder 9.5 degrees off at 69), it was set down as the gap began.
-      if (hidden > 1 && o.set_down_where_seen &&
-          (at(moving[k]).pose.translation() - centre.translation()).norm() <= th.move_t)
-        cur.end = frames[moving[k]] + 1;
+      const bool seen_there = o.set_down_where_seen &&
+                              (at(moving[k]).pose.translation() - centre.translation()).norm() <= th.move_t;
+      if (hidden > 1)
+        cur.end = frames[moving[k]] + (seen_there ? 1 : static_cast<int>(std::lround(o.hidden_event_fraction * hidden)));
       place_hidden_grasp();
     }
     cur.end_confidence = at(moving[j]).confidence * std::exp(-(gap - 1) / 10.0);

@@ -5,11 +5,11 @@
 #include <QRectF>
 #include <QString>
 
-class QPainter;
-
 #include "core/demo/demonstration.h"
 #include "core/geometry/se3.h"
 #include "ui/document/step_status.h"  // kLowConfidence
+
+class QPainter;
 
 namespace demoplan::ui {
 
