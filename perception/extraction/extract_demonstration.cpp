@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "perception/camera/board_extrinsics.h"
 #include "perception/events/demonstration_builder.h"
+#include "perception/extraction/carrier_rides.h"
 #include "perception/events/track_smoothing.h"
 #include "perception/importers/bop_csv.h"
 #include "perception/importers/hand_detections.h"
@@ -34,9 +35,10 @@ void check_rows(const PoseTracks& tracks, const PoseTracker& tracker) {
 // the supports the planning parts resting on them are settled on. A carrier that rests on the
 // furniture then is settled there first, as the parts are: its depth, from its image alone, is
 // its weakest coordinate (waiter_0's tray 27 mm off along the line of sight after its ride), and
-// the parts on it would take that error over.
+// the parts on it would take that error over. Elsewhere, after a ride, where the fit of its
+// riders puts it (carrier_rides.h).
 EventSupports carrier_tops(const PoseTracks& tracks, const std::vector<TrackedPart>& parts, const Demonstration& d,
-                           const Scene& scene, const SnapOptions& snap) {
+                           const Scene& scene, const SnapOptions& snap, const std::vector<FittedRide>& rides = {}) {
   const auto furniture = furniture_support_polygons(scene);
   EventSupports tops(d.events.size());
   for (size_t k = 0; k < parts.size() && k < tracks.samples.size(); ++k) {
@@ -49,6 +51,10 @@ EventSupports carrier_tops(const PoseTracks& tracks, const std::vector<TrackedPa
       if (f < 0) continue;
       Pose pose = samples[f].pose;
       if (const auto settled = snap_to_support(faces, pose, furniture, snap)) pose = settled->pose;
+      else
+        for (const FittedRide& ride : rides)
+          if (ride.carrier == k && d.events[i].frame >= ride.end && d.events[i].frame <= ride.until)
+            pose = ride.carrier_after;
       if (auto top = carrier_top(parts[k].extent, pose)) tops[i].push_back(std::move(*top));
     }
   }
@@ -112,7 +118,17 @@ ExtractionResult extract_demonstration(const std::string& video_path, const Came
     SettleOptions settle = o.settle;
     settle.snap.viewpoint = r.world_T_camera.translation();
     const EventSupports trays = carrier_tops(r.raw, tracker.parts(), r.demonstration, *o.scene, settle.snap);
-    r.demonstration = settle_on_supports(*o.scene, std::move(r.demonstration), settle, trays);
+    Demonstration settled = settle_on_supports(*o.scene, r.demonstration, settle, trays);
+    // The carriers' rides fitted to where their riders, settled before them, show after them.
+    const auto rides = o.fit_rides ? fit_carrier_rides(r.raw, r.contacts, tracker.parts(), settled, *o.scene, settle.snap,
+                                                       camera, o.ride)
+                                   : std::vector<FittedRide>{};
+    if (!rides.empty()) {
+      settled = settle_on_supports(*o.scene, r.demonstration, settle,
+                                   carrier_tops(r.raw, tracker.parts(), r.demonstration, *o.scene, settle.snap, rides));
+      move_riders(settled, rides);
+    }
+    r.demonstration = std::move(settled);
   }
   r.smoothed = smooth_tracks(r.raw, r.contacts, o.contacts);
   r.frames = frames;

@@ -17,6 +17,7 @@
 #include "perception/events/track_segmentation.h"
 #include "perception/events/hand_fusion.h"
 #include "perception/markers/marker_detector.h"
+#include "perception/tracking/carrier_ride.h"
 #include "perception/tracking/pose_track.h"
 #include "perception/tracking/pose_tracker.h"
 
@@ -44,6 +45,11 @@ struct ExtractionOptions {
   // Within 11 degrees and 5 cm in height: farther than the planner's settle, as a monocular
   // estimate of a part at rest is tilted by up to 7 degrees (tunnel_0 behind the occluder).
   SettleOptions settle{SnapOptions{.max_tilt = 0.2, .max_distance = 0.05, .gap = 0.001, .max_outside = 0.0, .viewpoint = {}}};
+  // With the scene: a carrier's ride (a tray carried with parts on it) fitted to where its riders
+  // show after it; the riders rest where it took them (carrier_rides.h). waiter_0 without markers:
+  // the parts on the tray after its ride 27-35 mm off, 5-9 mm with it.
+  bool fit_rides = true;
+  CarrierRideOptions ride;
   std::function<void(int done, int total)> progress;
   const std::atomic<bool>* cancel = nullptr;
 };
