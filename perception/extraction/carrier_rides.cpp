@@ -1,6 +1,9 @@
 #include "perception/extraction/carrier_rides.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "core/geometry/box_faces.h"
 #include "core/scene/support.h"
@@ -35,12 +38,18 @@ std::optional<Eigen::Vector2d> seen_at(const std::vector<PoseSample>& samples, i
   return Eigen::Vector2d(median(us), median(vs));
 }
 
+std::string px(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f px", v);
+  return text;
+}
+
 }  // namespace
 
 std::vector<FittedRide> fit_carrier_rides(const PoseTracks& tracks, const ContactAnalysis& contacts,
                                           const std::vector<TrackedPart>& parts, const Demonstration& settled,
                                           const Scene& scene, const SnapOptions& snap, const Camera& camera,
-                                          const CarrierRideOptions& options) {
+                                          const CarrierRideOptions& options, std::vector<std::string>* notes) {
   std::vector<FittedRide> out;
   if (!camera.world_T_camera) return out;
   const auto furniture = furniture_support_polygons(scene);
@@ -79,10 +88,29 @@ std::vector<FittedRide> fit_carrier_rides(const PoseTracks& tracks, const Contac
     Pose carrier_before = samples[from].pose;
     if (const auto on = snap_to_support(box_faces(parts[k].extent), carrier_before, furniture, snap))
       carrier_before = on->pose;
-    const auto motion = fit_ride(camera, carrier_before, samples[to].pose, sightings, options);
-    if (!motion) continue;
-    fitted.motion = *motion;
-    fitted.carrier_after = *motion * carrier_before;
+    const RideFit fit = fit_ride(camera, carrier_before, samples[to].pose, sightings, options);
+    const std::string what = "part '" + parts[k].id + "', frames " + std::to_string(ride.start) + "-" +
+                             std::to_string(ride.end) + ": ";
+    const std::string riding = std::to_string(sightings.size()) + " parts on it";
+    if (!fit.motion) {
+      if (notes && fit.residual_px > options.max_residual_px)
+        notes->push_back(what + "its ride and the " + riding + " do not fit one motion (" + px(fit.residual_px) +
+                         " off): their rests after it are as tracked");
+      else if (notes && fit.residual_px >= 0)
+        notes->push_back(what + "the fit of its ride to the " + riding + " moves it farther from where its image puts "
+                         "it than its depth can be off: their rests after it are as tracked");
+      continue;
+    }
+    fitted.motion = *fit.motion;
+    fitted.carrier_after = *fit.motion * carrier_before;
+    if (notes) {
+      const Eigen::Vector3d eye = camera.world_T_camera->translation();
+      const double nearer = (samples[to].pose.translation() - eye).norm() - (fitted.carrier_after.translation() - eye).norm();
+      notes->push_back(what + "its ride fitted to where the " + riding + " show (" + px(fit.residual_px) +
+                       "): it ended " + std::to_string(static_cast<int>(std::lround(std::abs(nearer) * 1e3))) + " mm " +
+                       (nearer >= 0 ? "nearer" : "farther") +
+                       " than its own image puts it, and the parts on it rest where it took them");
+    }
     out.push_back(std::move(fitted));
   }
   return out;

@@ -8,6 +8,7 @@
 // A rider is a planning part that rode over the same frames; its pose before is its settled
 // pose at the last event before the ride (on the carrier, which rested on the furniture), where
 // it shows after is its track's image position in the first frames it rests after the ride.
+#include <string>
 #include <vector>
 
 #include "core/demo/demonstration.h"
@@ -36,10 +37,11 @@ struct FittedRide {
 
 // `settled`: the demonstration with its rests settled on the furniture and the carriers' tracked
 // tops; a carrier's pose before its ride is settled onto the furniture with `snap` where it can be.
+// `notes`: for the operator, each ride fitted and each whose riders did not fit one motion.
 std::vector<FittedRide> fit_carrier_rides(const PoseTracks& tracks, const ContactAnalysis& contacts,
                                           const std::vector<TrackedPart>& parts, const Demonstration& settled,
                                           const Scene& scene, const SnapOptions& snap, const Camera& camera,
-                                          const CarrierRideOptions& options = {});
+                                          const CarrierRideOptions& options = {}, std::vector<std::string>* notes = nullptr);
 
 // Every rider's place at the events from its ride's end while it rests where the ride left it:
 // its place before, moved by the ride.

@@ -10,8 +10,8 @@
 #include "core/error.h"
 #include "perception/camera/board_extrinsics.h"
 #include "perception/events/demonstration_builder.h"
-#include "perception/extraction/carrier_rides.h"
 #include "perception/events/track_smoothing.h"
+#include "perception/extraction/carrier_rides.h"
 #include "perception/importers/bop_csv.h"
 #include "perception/importers/hand_detections.h"
 #include "perception/tracking/bop_fusion.h"
@@ -121,7 +121,7 @@ ExtractionResult extract_demonstration(const std::string& video_path, const Came
     Demonstration settled = settle_on_supports(*o.scene, r.demonstration, settle, trays);
     // The carriers' rides fitted to where their riders, settled before them, show after them.
     const auto rides = o.fit_rides ? fit_carrier_rides(r.raw, r.contacts, tracker.parts(), settled, *o.scene, settle.snap,
-                                                       camera, o.ride)
+                                                       camera, o.ride, &r.warnings)
                                    : std::vector<FittedRide>{};
     if (!rides.empty()) {
       settled = settle_on_supports(*o.scene, r.demonstration, settle,

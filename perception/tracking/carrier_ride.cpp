@@ -16,9 +16,10 @@ Eigen::Vector3d moved(const Eigen::Vector4d& p, const Eigen::Vector3d& centre, c
 
 }  // namespace
 
-std::optional<Pose> fit_ride(const Camera& camera, const Pose& carrier_before, const Pose& carrier_after,
-                                       const std::vector<RiderSighting>& riders, const CarrierRideOptions& options) {
-  if (!camera.world_T_camera || static_cast<int>(riders.size()) < options.min_riders) return std::nullopt;
+RideFit fit_ride(const Camera& camera, const Pose& carrier_before, const Pose& carrier_after,
+                 const std::vector<RiderSighting>& riders, const CarrierRideOptions& options) {
+  RideFit fit;
+  if (!camera.world_T_camera || static_cast<int>(riders.size()) < options.min_riders) return fit;
   const Pose camera_T_world = camera.world_T_camera->inverse();
   const auto pixel = [&](const Eigen::Vector3d& world) {
     const cv::Point2d q = camera.project(camera_T_world * world);
@@ -31,9 +32,9 @@ std::optional<Pose> fit_ride(const Camera& camera, const Pose& carrier_before, c
   const auto residuals = [&](const Eigen::Vector4d& p) {
     Eigen::VectorXd r(2 * points.size());
     for (size_t i = 0; i < points.size(); ++i) {
-      const Eigen::Vector3d x = camera_T_world * moved(p, centre, points[i].before);
-      if (x.z() <= 1e-3) return Eigen::VectorXd();  // behind the camera: no fit from here
-      r.segment<2>(2 * i) = pixel(moved(p, centre, points[i].before)) - points[i].seen;
+      const Eigen::Vector3d x = moved(p, centre, points[i].before);
+      if ((camera_T_world * x).z() <= 1e-3) return Eigen::VectorXd();  // behind the camera: no fit from here
+      r.segment<2>(2 * i) = pixel(x) - points[i].seen;
     }
     return r;
   };
@@ -43,31 +44,33 @@ std::optional<Pose> fit_ride(const Camera& camera, const Pose& carrier_before, c
   Eigen::Vector4d p;
   p << std::atan2(turn(1, 0), turn(0, 0)), carrier_after.translation() - centre;
   Eigen::VectorXd r = residuals(p);
-  if (r.size() == 0) return std::nullopt;
+  if (r.size() == 0) return fit;
   for (int iteration = 0; iteration < 20; ++iteration) {
     Eigen::MatrixXd J(r.size(), 4);
     for (int k = 0; k < 4; ++k) {
       Eigen::Vector4d d = Eigen::Vector4d::Zero();
       d[k] = 1e-5;  // rad or m
       const Eigen::VectorXd plus = residuals(p + d), minus = residuals(p - d);
-      if (plus.size() == 0 || minus.size() == 0) return std::nullopt;
+      if (plus.size() == 0 || minus.size() == 0) return fit;
       J.col(k) = (plus - minus) / (2 * d[k]);
     }
     const Eigen::Vector4d step = (J.transpose() * J + 1e-9 * Eigen::Matrix4d::Identity()).ldlt().solve(-J.transpose() * r);
     p += step;
     r = residuals(p);
-    if (r.size() == 0) return std::nullopt;
+    if (r.size() == 0) return fit;
     if (step.tail<3>().norm() < 1e-6 && std::abs(step[0]) < 1e-7) break;
   }
-  if (std::sqrt(r.squaredNorm() / static_cast<double>(points.size())) > options.max_residual_px) return std::nullopt;
+  fit.residual_px = std::sqrt(r.squaredNorm() / static_cast<double>(points.size()));
+  if (fit.residual_px > options.max_residual_px) return fit;
 
   Pose after = Pose::Identity();
   after.linear() = Eigen::AngleAxisd(p[0], Eigen::Vector3d::UnitZ()) * carrier_before.linear();
   after.translation() = moved(p, centre, centre);
   const Eigen::Vector3d eye = camera.world_T_camera->translation();
   const double tracked = (carrier_after.translation() - eye).norm();
-  if (std::abs((after.translation() - eye).norm() - tracked) > options.max_depth_change * tracked) return std::nullopt;
-  return Pose(after * carrier_before.inverse());
+  if (std::abs((after.translation() - eye).norm() - tracked) <= options.max_depth_change * tracked)
+    fit.motion = after * carrier_before.inverse();
+  return fit;
 }
 
 }  // namespace demoplan::perception

@@ -29,10 +29,16 @@ struct CarrierRideOptions {
   double max_depth_change = 0.05;   // of the carrier's distance: larger, the fit went astray
 };
 
-// The ride's motion (world: a pose after it is the motion times the pose before) that fits the
-// sightings best, from the carrier's tracked pose after it, `carrier_after`, whose image
-// position counts as a rider's. None when the riders are too few or do not fit one motion.
-std::optional<Pose> fit_ride(const Camera& camera, const Pose& carrier_before, const Pose& carrier_after,
-                                       const std::vector<RiderSighting>& riders, const CarrierRideOptions& options = {});
+struct RideFit {
+  // World: a pose after the ride is the motion times the pose before. None when the riders are
+  // too few, or do not fit one motion (residual_px), or it went astray.
+  std::optional<Pose> motion;
+  double residual_px = -1.0;  // RMS over the centres; -1: not fitted (too few riders)
+};
+
+// The ride's motion that fits the sightings best, from the carrier's tracked pose after it,
+// `carrier_after`, whose image position counts as a rider's.
+RideFit fit_ride(const Camera& camera, const Pose& carrier_before, const Pose& carrier_after,
+                 const std::vector<RiderSighting>& riders, const CarrierRideOptions& options = {});
 
 }  // namespace demoplan::perception

@@ -67,8 +67,10 @@ struct Ride {
 
 TEST(CarrierRide, TheRideIsWhereItsRidersPatternFits) {
   const Ride ride;
-  const auto motion = fit_ride(ride.camera, ride.tray_before, ride.tray_tracked(), ride.sightings());
-  ASSERT_TRUE(motion);
+  const RideFit fit = fit_ride(ride.camera, ride.tray_before, ride.tray_tracked(), ride.sightings());
+  ASSERT_TRUE(fit.motion);
+  EXPECT_LT(fit.residual_px, 1e-3);
+  const Pose* motion = &*fit.motion;
   EXPECT_LT(((*motion * ride.tray_before).translation() - ride.tray_after().translation()).norm(), 1e-4);
   for (const Pose& r : ride.riders_before)
     EXPECT_LT(((*motion * r).translation() - (ride.motion * r).translation()).norm(), 1e-4);
@@ -76,7 +78,7 @@ TEST(CarrierRide, TheRideIsWhereItsRidersPatternFits) {
   // A pixel of noise on each rider: still within millimetres, where the tray's image put it 27.
   std::vector<RiderSighting> noisy = ride.sightings();
   for (size_t i = 0; i < noisy.size(); ++i) noisy[i].seen += Eigen::Vector2d(i % 2 ? 1.0 : -1.0, i == 1 ? 1.0 : -0.5);
-  const auto rough = fit_ride(ride.camera, ride.tray_before, ride.tray_tracked(), noisy);
+  const auto rough = fit_ride(ride.camera, ride.tray_before, ride.tray_tracked(), noisy).motion;
   ASSERT_TRUE(rough);
   const double off = ((*rough * ride.tray_before).translation() - ride.tray_after().translation()).norm();
   EXPECT_LT(off, 0.010);
@@ -88,13 +90,17 @@ TEST(CarrierRide, PartsThatDidNotMoveAsOneOrOneAloneGiveNoFit) {
   // One rider slid 10 cm across the tray during the ride.
   std::vector<RiderSighting> slid = ride.sightings();
   slid[1].seen = pixel(ride.camera, (ride.motion * at({0.1, 0, 0}) * ride.riders_before[1]).translation());
-  EXPECT_FALSE(fit_ride(ride.camera, ride.tray_before, ride.tray_tracked(), slid));
+  const RideFit off = fit_ride(ride.camera, ride.tray_before, ride.tray_tracked(), slid);
+  EXPECT_FALSE(off.motion);
+  EXPECT_GT(off.residual_px, 3.0);
   // One rider does not tell a turn from a shift.
-  EXPECT_FALSE(fit_ride(ride.camera, ride.tray_before, ride.tray_tracked(), {ride.sightings()[0]}));
+  const RideFit alone = fit_ride(ride.camera, ride.tray_before, ride.tray_tracked(), {ride.sightings()[0]});
+  EXPECT_FALSE(alone.motion);
+  EXPECT_EQ(alone.residual_px, -1.0);
   // No camera pose: nothing to project with.
   Camera unplaced = ride.camera;
   unplaced.world_T_camera.reset();
-  EXPECT_FALSE(fit_ride(unplaced, ride.tray_before, ride.tray_tracked(), ride.sightings()));
+  EXPECT_FALSE(fit_ride(unplaced, ride.tray_before, ride.tray_tracked(), ride.sightings()).motion);
 }
 
 // The extraction's part: the riders' rests before (the last event before the ride), the ride
@@ -136,8 +142,12 @@ TEST(CarrierRides, RidersRestWhereTheRideTookThemUntilTheyAreCarriedOn) {
   d.events = {event(10, EventType::Release), event(grasp, EventType::Grasp), event(grasp + 10, EventType::Release)};
   const Pose a_turned = d.events[1].poses[0];
 
-  const auto rides = fit_carrier_rides(tracks, contacts, parts, d, Scene{}, SnapOptions{}, ride.camera);
+  std::vector<std::string> notes;
+  const auto rides = fit_carrier_rides(tracks, contacts, parts, d, Scene{}, SnapOptions{}, ride.camera, {}, &notes);
   ASSERT_EQ(rides.size(), 1u);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0].substr(0, 28), "part 'TRAY', frames 20-30: i") << notes[0];
+  EXPECT_NE(notes[0].find("27 mm nearer than its own image puts it"), std::string::npos) << notes[0];
   EXPECT_EQ(rides[0].carrier, 3u);
   EXPECT_EQ(rides[0].riders.size(), 3u);
   EXPECT_LT((rides[0].carrier_after.translation() - ride.tray_after().translation()).norm(), 1e-3);
