@@ -1,4 +1,5 @@
 // demoplan-cli extract: grasp/release events and part poses from a demonstration video.
+#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -19,7 +20,9 @@
 #include "perception/tracking/marker_pose_tracker.h"
 #include "perception/tracking/model_pose_tracker.h"
 #include "perception/tracking/track_coverage.h"
+#include "perception/importers/bop_csv.h"
 #include "perception/tracking/tracker_init.h"
+#include "perception/tracking/tracker_init_bop.h"
 
 namespace demoplan::cli {
 
@@ -31,6 +34,24 @@ struct ExtractCliOptions {
   bool board = false;
   bool json = false;
 };
+
+// The model tracker's start: a demoplan-tracker-init file, or a pose estimator's BOP results
+// CSV (by extension), whose poses are in the camera's frame.
+perception::TrackerInit model_tracker_start(const std::string& init, const perception::MarkerScene& scene,
+                                            const perception::Camera& camera, const std::string& camera_path) {
+  std::string extension = std::filesystem::path(init).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".csv") return perception::load_tracker_init(init);
+  if (!camera.world_T_camera)
+    throw InputError(camera_path, "world_T_camera",
+                     "a start from pose estimates (" + init + ") needs the camera's pose in the world in the camera file");
+  std::vector<std::string> parts;
+  for (const auto& object : scene.objects) parts.push_back(object.id);
+  const perception::TrackerInit start =
+      perception::tracker_init_from_bop(perception::load_bop_csv(init), parts, *camera.world_T_camera, init);
+  std::cerr << "start from " << init << ": frame " << start.frame << ", each part's best estimate there\n";
+  return start;
+}
 
 int run_extract(const ExtractCliOptions& o) {
   const perception::MarkerScene scene = perception::load_marker_scene(o.scene);
@@ -68,8 +89,8 @@ int run_extract(const ExtractCliOptions& o) {
       throw InputError(init, "", "the model tracker needs every part's pose in the first frame: no such file (use --init)");
     perception::ModelTrackerOptions model_options;
     model_options.contour_cache = perception::default_contour_cache_folder();
-    tracker = perception::make_model_tracker(scene, o.scene, o.data_dir, perception::load_tracker_init(init), init,
-                                             model_options);
+    tracker = perception::make_model_tracker(scene, o.scene, o.data_dir, model_tracker_start(init, scene, camera, camera_path),
+                                             init, model_options);
   } else {
     tracker = std::make_unique<perception::MarkerPoseTracker>(scene);
   }
@@ -166,8 +187,8 @@ Command register_extract_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--init", o->init,
                   "with --tracker model: every part's pose in the first frame, and any corrections (parts placed again "
-                  "later; demoplan-tracker-init JSON); "
-                  "default: init.json beside the scene");
+                  "later; demoplan-tracker-init JSON), or a pose estimator's BOP results CSV (.csv: the first frame "
+                  "with an estimate of every part, each part's best there); default: init.json beside the scene");
   sub->add_option("--overlay", o->overlay,
                   "also write the video with each part's outline where its track puts it (green: seen, red: "
                   "not seen in that frame), e.g. overlay.mp4");

@@ -3,6 +3,9 @@
 // demonstration cannot be done from a base pose, and the benchmark table with OMPL logs.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "tests/app/cli_suite.h"
@@ -66,7 +69,7 @@ TEST_F(CliPlanning, PlanPrintsTheIssuesKeysAndAValidPath) {
 // rest poses put onto their supports first).
 TEST_F(CliPlanning, AMarkerFreeDemonstrationIsPlannedValid) {
   const std::string d = (dir_ / "no_markers").string();
-  const CliResult s = run({"synth", "--task", "shelf_1", "--no-markers", "--out", d, "--json"});
+  const CliResult s = run({"synth", "--task", "shelf_1", "--no-markers", "--detections", "--out", d, "--json"});
   ASSERT_EQ(s.code, 0) << s.err;
   // Bad starts first: a missing start file, and one that puts a part beside the picture.
   const CliResult missing = run({"extract", d + "/video.mp4", "--scene", d + "/scene.json", "--tracker", "model",
@@ -99,6 +102,30 @@ TEST_F(CliPlanning, AMarkerFreeDemonstrationIsPlannedValid) {
   EXPECT_TRUE(j["solved"].get<bool>());
   EXPECT_TRUE(j["valid"].get<bool>()) << j["validation_message"];
   EXPECT_EQ(j["grasps"].get<int>(), 2);
+
+  // Started from a pose estimator's output instead (synth's simulated BOP results, a few
+  // millimetres off): the same events, the rests within a centimetre.
+  const CliResult b = run({"extract", d + "/video.mp4", "--scene", d + "/scene.json", "--tracker", "model", "--init",
+                           d + "/bop.csv", "--out", d + "/demo_bop.json"});
+  ASSERT_EQ(b.code, 0) << b.err;
+  EXPECT_NE(b.err.find("start from " + d + "/bop.csv: frame 0"), std::string::npos) << b.err;
+  const CliResult eb = run({"evaluate", d + "/demo_bop.json", "--truth", d + "/truth.json", "--json"});
+  ASSERT_EQ(eb.code, 0) << eb.err;
+  EXPECT_EQ(one_object(eb)["event_recall"].get<double>(), 1.0) << eb.out;
+  EXPECT_EQ(one_object(eb)["event_precision"].get<double>(), 1.0) << eb.out;
+  EXPECT_LT(one_object(eb)["max_translation_error_mm"].get<double>(), 10.0) << eb.out;
+  // Estimates of only one of the two parts: no start, the file and the part named.
+  std::ifstream all(d + "/bop.csv");
+  std::ofstream one(d + "/bop_one.csv");
+  for (std::string line; std::getline(all, line);)
+    if (line.find(",5,") == std::string::npos) one << line << "\n";
+  one.close();
+  const CliResult partial = run({"extract", d + "/video.mp4", "--scene", d + "/scene.json", "--tracker", "model",
+                                 "--init", d + "/bop_one.csv", "--out", d + "/bad.json"});
+  EXPECT_EQ(partial.code, 2);
+  EXPECT_NE(partial.err.find("bop_one.csv"), std::string::npos) << partial.err;
+  EXPECT_NE(partial.err.find("'YCBV_05'"), std::string::npos) << partial.err;
+  EXPECT_FALSE(fs::exists(d + "/bad.json"));
 }
 
 TEST_F(CliPlanning, ASecondRunReadsTheFittedMeshesAndPlansTheSame) {
