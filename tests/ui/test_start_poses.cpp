@@ -13,11 +13,13 @@
 #include <opencv2/imgproc.hpp>
 
 #include "perception/camera/camera_model.h"
+#include "core/error.h"
 #include "core/project/project.h"
 #include "perception/events/tracks_demonstration.h"
 #include "perception/extraction/tracks_file.h"
 #include "perception/markers/marker_scene.h"
 #include "perception/synthetic/synthetic_video.h"
+#include "perception/importers/bop_csv.h"
 #include "perception/tracking/tracker_init.h"
 #include "ui/document/document.h"
 #include "ui/widgets/pose_editor.h"
@@ -191,6 +193,59 @@ private slots:
     doc_->setCurrentFrame(0);
     QVERIFY(!starts().shown());
     QVERIFY2(starts().caption().contains(QStringLiteral("init.json")), qPrintable(starts().caption()));
+  }
+
+  // Edit > Place Parts from Pose Estimates: a 6D pose estimator's results for frame 0 (BOP CSV, in
+  // the camera's frame) put every part's start there in one undo step, and the outlines follow;
+  // estimates that miss a part, or give the parts only at a later frame, change nothing and say why.
+  void aPoseEstimatorsResultsPlaceTheStarts() {
+    const std::string csv = dir_.filePath(QStringLiteral("estimates.csv")).toStdString();
+    auto write = [&](int frame, size_t parts, double shift_first) {
+      std::vector<perception::BopDetection> estimates;
+      for (size_t k = 0; k < parts; ++k) {
+        perception::BopDetection e;
+        e.image_id = frame;
+        e.object_id = perception::bop_object_id(truth_.parts[k].id);
+        e.score = 0.9;
+        Pose world = truth_.parts[k].world_T_object;
+        if (k == 0) world.translation() += Eigen::Vector3d(0, shift_first, 0);
+        e.camera_T_object = camera().world_T_camera->inverse() * world;
+        estimates.push_back(e);
+      }
+      perception::save_bop_csv(csv, estimates);
+    };
+    const Pose before0 = startPose(0), before1 = startPose(1);
+    const int steps = doc_->undoStack()->count();
+    // Every part at frame 0, the first 3 cm off in y (an estimator's error).
+    write(0, 2, 0.03);
+    QCOMPARE(doc_->placeStartsFromEstimates(csv), 2);
+    QCOMPARE(doc_->undoStack()->count(), steps + 1);
+    for (int o = 0; o < 2; ++o) {
+      const perception::PartStart* truth = truth_.find(doc_->scene().objects[o].id);
+      const Eigen::Vector3d expected = truth->world_T_object.translation() + Eigen::Vector3d(0, o == 0 ? 0.03 : 0.0, 0);
+      QVERIFY2((startPose(o).translation() - expected).norm() < 1e-6, qPrintable(QString::number(o)));
+    }
+    QVERIFY(starts().shown());
+    view_->grab().save(test::artifactDir() + QStringLiteral("/start-poses-from-estimates.png"));
+    const int o0 = truth_.parts[0].id == doc_->scene().objects[0].id ? 0 : 1;
+    QVERIFY2(fractionWithin(edgeDistances(o0), 2.0) < 0.6, "the part estimated 3 cm off is drawn off its edges");
+    QVERIFY2(fractionWithin(edgeDistances(1 - o0), 2.0) > 0.9, "the part estimated right is drawn on its edges");
+    doc_->undoStack()->undo();
+    QVERIFY((startPose(0).translation() - before0.translation()).norm() < 1e-9);
+    QVERIFY((startPose(1).translation() - before1.translation()).norm() < 1e-9);
+    // Estimates of one part only; of both, but first at frame 2: nothing changes, the file is named.
+    for (const auto& [frame, parts, says] : {std::tuple{0, size_t(1), std::string("lacks '")}, {2, size_t(2), std::string("frame 2")}}) {
+      write(frame, parts, 0.0);
+      QString error;
+      try {
+        doc_->placeStartsFromEstimates(csv);
+      } catch (const InputError& e) {
+        error = QString::fromStdString(e.what());
+      }
+      QVERIFY2(error.contains(QString::fromStdString(csv)) && error.contains(QString::fromStdString(says)), qPrintable(error));
+      QCOMPARE(doc_->undoStack()->count(), steps + 1);  // the undone step is still there to redo, no new one
+      QVERIFY((startPose(0).translation() - before0.translation()).norm() < 1e-9);
+    }
   }
 
   // A part the marker scene tracks beyond the project's (a tray, not planned for) has no start the

@@ -17,6 +17,8 @@
 #include "core/project/project_scene.h"
 #include "perception/camera/camera_model.h"
 #include "perception/events/tracks_demonstration.h"
+#include "perception/importers/bop_csv.h"
+#include "perception/tracking/tracker_init_bop.h"
 #include "perception/video/video_reader.h"
 #include "ui/document/demo_poses.h"
 
@@ -521,16 +523,8 @@ void Document::setObjectPose(int event, int object, const Pose& world_pose, int 
       object >= static_cast<int>(cur.object_ids.size()))
     return;
   Demonstration d = cur;
-  // The stored pose may be relative to a robot link (objects riding on the KMR's deck).
-  Pose stored = world_pose;
-  const std::string& frame = d.events[event].pose_frame(object);
-  if (!frame.empty()) {
-    const int link = scene_->robot.model.link_index(frame);
-    if (link >= 0)
-      stored = link_pose(scene_->robot.model, initialConfiguration(), scene_->robot.base, link).inverse() * world_pose;
-  }
   const std::vector<size_t> events = rest_events(d, static_cast<size_t>(event), object);
-  for (size_t i : events) set_object_pose(d, i, object, stored);
+  for (size_t i : events) set_object_pose(d, i, object, storedPose(d, event, object, world_pose));
   QString text = tr("Move %1").arg(q(d.object_ids[object]));
   if (events.size() > 1)
     text += tr(" (rest from frame %1 to %2)").arg(d.events[events.front()].frame).arg(d.events[events.back()].frame);
@@ -538,6 +532,37 @@ void Document::setObjectPose(int event, int object, const Pose& world_pose, int 
     text += tr(" at frame %1").arg(d.events[event].frame);
   const long key = (static_cast<long>(event) * 4096 + object) * 1024 + merge_key;
   undo_.push(new DemoCommand(this, text, cur, d, selected_event_, selected_event_, merge_key >= 0 ? kMergePose : -1, key));
+}
+
+Pose Document::storedPose(const Demonstration& d, int event, int object, const Pose& world_pose) const {
+  // The stored pose may be relative to a robot link (objects riding on the KMR's deck).
+  const std::string& frame = d.events[event].pose_frame(object);
+  if (frame.empty()) return world_pose;
+  const int link = scene_->robot.model.link_index(frame);
+  if (link < 0) return world_pose;
+  return link_pose(scene_->robot.model, initialConfiguration(), scene_->robot.base, link).inverse() * world_pose;
+}
+
+int Document::placeStartsFromEstimates(const std::string& csv) {
+  const perception::Camera* camera = media_->camera();
+  if (!camera || !camera->world_T_camera)
+    throw InputError(csv, "", "placing the parts from pose estimates needs the camera's pose in the world: open a "
+                              "camera file that gives it");
+  if (demonstration_.events.empty())
+    throw InputError(csv, "", "the parts' start is their pose at the first event: detect or add an event first");
+  const perception::TrackerInit start = perception::tracker_init_from_bop(
+      perception::load_bop_csv(csv), demonstration_.object_ids, *camera->world_T_camera, csv);
+  if (start.frame != 0)
+    throw InputError(csv, "im_id " + std::to_string(start.frame),
+                     "the estimates give every part first at frame " + std::to_string(start.frame) +
+                         ", and the start is frame 0 (extract --init " + csv + " starts the tracker there)");
+  Demonstration d = demonstration_;
+  for (const perception::PartStart& part : start.parts) {
+    const int object = d.object_index(part.id);
+    for (size_t i : rest_events(d, 0, object)) set_object_pose(d, i, object, storedPose(d, 0, object, part.world_T_object));
+  }
+  pushEdit(tr("Place %n part(s) from pose estimates", nullptr, int(start.parts.size())), d, selected_event_);
+  return static_cast<int>(start.parts.size());
 }
 
 void Document::setEventConfidence(int event, double confidence) {

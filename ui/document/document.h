@@ -114,6 +114,11 @@ public:
   // the same rest (demo_poses.h). Consecutive edits with the same `merge_key` (>= 0: one
   // field's spin steps, one gizmo drag) of the same part and event are one undo step.
   void setObjectPose(int event, int object, const Pose& world_pose, int merge_key = -1);
+  // Places every part where a pose estimator's BOP results CSV shows it in frame 0 (its start
+  // rest; one undo step), as the operator would with the gizmo. Returns how many; throws
+  // InputError naming the file (no camera pose, no event yet, a part without an estimate at
+  // frame 0, the file itself) and changes nothing then.
+  int placeStartsFromEstimates(const std::string& csv);
   void setEventConfidence(int event, double confidence);
   // Dismisses a detection doubt (Demonstration::doubts) once the operator has checked it.
   void removeDoubt(int index);
@@ -190,6 +195,8 @@ private:
   void writeFiles(const QString& file, Project& p) const;
   void pushEdit(const QString& text, const Demonstration& after, int selected_after, int merge_id = -1);
   void clampFrame();
+  // `world_pose` as `d` stores it for `object` at `event` (relative to a robot link it rides on).
+  Pose storedPose(const Demonstration& d, int event, int object, const Pose& world_pose) const;
 
   std::string data_dir_;
   std::unique_ptr<MeshCache> mesh_cache_;

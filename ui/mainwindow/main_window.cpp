@@ -330,6 +330,9 @@ void MainWindow::createActions() {
   place_again->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+P")));
   place_again->setStatusTip(tr("Where the part-model tracker lost the selected part or followed it wrongly: place it "
                                "again over this frame, and Detect Events follows it from there"));
+  auto* from_estimates = edit->addAction(tr("Place Parts from Pose &Estimates..."), this, &MainWindow::placeStartsFromEstimates);
+  from_estimates->setStatusTip(tr("Start every part where a 6D pose estimator's results (BOP CSV) show it in frame 0, "
+                                  "instead of moving each there; the part-model tracker starts from these poses"));
   auto* remove_placement = edit->addAction(tr("Remove This Placement"), this, [this] {
     doc_->removeCorrection(doc_->correctionAt(doc_->selectedObject(), doc_->currentFrame()));
   });
@@ -1020,6 +1023,25 @@ void MainWindow::placePartAgain() {
                      .arg(doc_->currentFrame());
   if (!doc_->detection()->modelTracker()) text += tr("; only the Part models tracker uses it");
   statusBar()->showMessage(text, 15000);
+}
+
+void MainWindow::placeStartsFromEstimates() {
+  if (!doc_->hasProject()) return;
+  const QString file = QFileDialog::getOpenFileName(this, tr("Pose estimates of the start frame"),
+                                                    QFileInfo(doc_->filePath()).absolutePath(),
+                                                    tr("BOP results (*.csv);;All files (*)"));
+  if (file.isEmpty()) return;
+  try {
+    const int placed = doc_->placeStartsFromEstimates(file.toStdString());
+    doc_->setCurrentFrame(0);
+    statusBar()->showMessage(tr("%n part(s) placed where %1 shows them in frame 0: check each outline over the video, "
+                                "then Detect Events (Ctrl+D)",
+                                nullptr, placed)
+                                 .arg(QFileInfo(file).fileName()),
+                             15000);
+  } catch (const std::exception& e) {
+    reportError(tr("Place parts from pose estimates"), QString::fromStdString(e.what()));
+  }
 }
 
 void MainWindow::showShortcuts() {

@@ -127,6 +127,8 @@ private:
   void showAbout();
   void addEventAtPlayhead(EventType type);
   void placePartAgain();  // the selected part at the playhead (Document::placeAgain)
+  // Every part at its start where a pose estimator's BOP CSV shows it in frame 0 (asks for the file).
+  void placeStartsFromEstimates();
   QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area);
 
   MainWindowOptions options_;
