@@ -1,10 +1,13 @@
 // Edit > Detect Events from Tracks in the real main window (OpenGL: runs under Xvfb): enabled on
 // a benchmark project, one undo step, the Part Tracks dock shown under the timeline with its
 // frames lined up. Screenshots go to build/test-artifacts/ui/10_tracks.png (the window) and
-// 10_tracks_docks.png (the timeline and the tracks: docs/tracks-panel.png).
+// 10_tracks_docks.png (the timeline and the tracks: docs/tracks-panel.png); the Edit menu's
+// placement from pose estimates, 11_edit_menu.png.
 #include <QAction>
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QMenu>
+#include <QMenuBar>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -82,6 +85,27 @@ private slots:
     QVERIFY(window_->grab(docks).save(shots + QStringLiteral("/10_tracks_docks.png")));
     doc->undoStack()->undo();
     QCOMPARE(demonstration_to_json(doc->demonstration()), before);
+  }
+
+  // Edit > Place Parts from Pose Estimates is in the Edit menu, with the other placement actions,
+  // and enabled on a project (its work is tested in test_start_poses). The open menu:
+  // build/test-artifacts/ui/11_edit_menu.png.
+  void theEditMenuOffersToPlaceThePartsFromPoseEstimates() {
+    QAction* estimates = action(QStringLiteral("Place Parts &from Pose Estimates..."));
+    QVERIFY(estimates);
+    QVERIFY(estimates->isEnabled());
+    QMenu* edit = nullptr;
+    for (QAction* a : window_->menuBar()->actions())
+      if (a->text() == QStringLiteral("&Edit")) edit = a->menu();
+    QVERIFY(edit);
+    QVERIFY(edit->actions().contains(estimates));
+    edit->popup(window_->mapToGlobal(QPoint(60, 30)));
+    QVERIFY(QTest::qWaitForWindowExposed(edit));
+    QVERIFY(edit->actionGeometry(estimates).isValid());
+    const QString shots = test::artifactDir() + QStringLiteral("/ui");
+    QDir().mkpath(shots);
+    QVERIFY(edit->grab().save(shots + QStringLiteral("/11_edit_menu.png")));
+    edit->hide();
   }
 };
 

@@ -330,7 +330,7 @@ void MainWindow::createActions() {
   place_again->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+P")));
   place_again->setStatusTip(tr("Where the part-model tracker lost the selected part or followed it wrongly: place it "
                                "again over this frame, and Detect Events follows it from there"));
-  auto* from_estimates = edit->addAction(tr("Place Parts from Pose &Estimates..."), this, &MainWindow::placeStartsFromEstimates);
+  auto* from_estimates = edit->addAction(tr("Place Parts &from Pose Estimates..."), this, &MainWindow::placeStartsFromEstimates);
   from_estimates->setStatusTip(tr("Start every part where a 6D pose estimator's results (BOP CSV) show it in frame 0, "
                                   "instead of moving each there; the part-model tracker starts from these poses"));
   auto* remove_placement = edit->addAction(tr("Remove This Placement"), this, [this] {
