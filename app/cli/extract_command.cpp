@@ -37,11 +37,15 @@ struct ExtractCliOptions {
 
 // The model tracker's start: a demoplan-tracker-init file, or a pose estimator's BOP results
 // CSV (by extension), whose poses are in the camera's frame.
-perception::TrackerInit model_tracker_start(const std::string& init, const perception::MarkerScene& scene,
-                                            const perception::Camera& camera, const std::string& camera_path) {
+bool is_bop_csv(const std::string& init) {
   std::string extension = std::filesystem::path(init).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".csv") return perception::load_tracker_init(init);
+  return extension == ".csv";
+}
+
+perception::TrackerInit model_tracker_start(const std::string& init, const perception::MarkerScene& scene,
+                                            const perception::Camera& camera, const std::string& camera_path) {
+  if (!is_bop_csv(init)) return perception::load_tracker_init(init);
   if (!camera.world_T_camera)
     throw InputError(camera_path, "world_T_camera",
                      "a start from pose estimates (" + init + ") needs the camera's pose in the world in the camera file");
@@ -121,8 +125,10 @@ int run_extract(const ExtractCliOptions& o) {
     // Lost for good by the model tracker: the operator can place it again where the video shows it.
     if (const int lost = coverage.back().lost_for_good_from(); lost > 0 && !init.empty())
       std::cerr << "  " << r.raw.object_ids[k] << ": lost from frame " << lost
-                << " on; where a later frame shows it, place it again there in " << init
-                << "'s \"corrections\" and extract again (docs/perception.md)\n";
+                << " on; where a later frame shows it, place it again there in "
+                << (is_bop_csv(init) ? "the \"corrections\" of a demoplan-tracker-init file with the parts' starts"
+                                     : init + "'s \"corrections\"")
+                << " and extract again (docs/perception.md)\n";
   }
   for (const auto& w : r.warnings) std::cerr << "  warning: " << w << "\n";
   for (const auto& i : issues) std::cerr << "  issue: " << i.message << "\n";

@@ -83,7 +83,7 @@ std::vector<FittedRide> fit_carrier_rides(const PoseTracks& tracks, const Contac
       if (!seen) continue;
       const Pose& pose = settled.events[before].poses[o];
       sightings.push_back({pose.translation(), *seen});
-      fitted.riders.push_back({o, pose, until});
+      fitted.riders.push_back({o, pose, std::min(until, fitted.until)});  // the carrier moving again takes it along
     }
     Pose carrier_before = samples[from].pose;
     if (const auto on = snap_to_support(box_faces(parts[k].extent), carrier_before, furniture, snap))

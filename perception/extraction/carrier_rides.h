@@ -23,7 +23,7 @@ namespace demoplan::perception {
 struct RiderRest {
   int object = -1;  // index into the demonstration's object_ids
   Pose before = Pose::Identity();  // world
-  int until = 0;    // the last frame it rests where the ride left it (its next grasp's)
+  int until = 0;    // the last frame it rests where the ride left it (its next grasp, or the carrier moving on)
 };
 
 struct FittedRide {
