@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/geometry/box_faces.h"
+#include "core/statistics.h"
 #include "core/scene/support.h"
 
 namespace demoplan::perception {
@@ -20,7 +21,8 @@ int next_motion(const ContactAnalysis& contacts, int object, int frame, int end)
 }
 
 // Where the image shows the track's part over frames [from, to] (the median of each
-// coordinate of its centre's projections); none when no sample there is valid.
+// coordinate of its centre's projections, the upper one of an even count); none when no sample
+// there is valid.
 std::optional<Eigen::Vector2d> seen_at(const std::vector<PoseSample>& samples, int from, int to, const Camera& camera) {
   const Pose camera_T_world = camera.world_T_camera->inverse();
   std::vector<double> us, vs;
@@ -31,11 +33,7 @@ std::optional<Eigen::Vector2d> seen_at(const std::vector<PoseSample>& samples, i
     vs.push_back(q.y);
   }
   if (us.empty()) return std::nullopt;
-  const auto median = [](std::vector<double>& v) {
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-  };
-  return Eigen::Vector2d(median(us), median(vs));
+  return Eigen::Vector2d(order_statistic(us, us.size() / 2), order_statistic(vs, vs.size() / 2));
 }
 
 std::string px(double v) {
