@@ -1,6 +1,8 @@
 #include "perception/tracking/model_pose_tracker.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <deque>
 #include <future>
@@ -71,6 +73,7 @@ struct ModelPoseTracker::State {
   std::vector<RestHold> holds;                 // each part's, while it is held at its rest (rest_hold.h)
   std::vector<std::optional<Pose>> rest_world;  // each part's pose (world) when last measured at rest
   std::vector<int> left_rest;                   // the frame that rest broke in (-1: not since)
+  std::vector<int> rest_began;                  // the first frame of each part's current rest
   // Each part's ride (ride_prediction.h), while it may have ridden: the riders, and its own rest
   // (world) their motion is applied to.
   struct Riding {
@@ -152,6 +155,7 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.holds.assign(models_.size(), RestHold());
   s.rest_world.assign(models_.size(), std::nullopt);
   s.left_rest.assign(models_.size(), -1);
+  s.rest_began.assign(models_.size(), 0);
   s.was_resting.assign(models_.size(), true);
   s.rides.assign(models_.size(), std::nullopt);
   if (options_.rest_search) s.supports = support_levels(furniture_);
@@ -534,7 +538,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     seen.push_back({part, sample});
     if (found_resting) follow_back(k, frame, bar);
     // Come to rest (three frames still): the frames before may show it there already.
-    if (options_.date_rests_back && resting[k] && !s.was_resting[k]) date_rest_back(k, frame, bar);
+    if (resting[k] && !s.was_resting[k]) s.rest_began[k] = options_.date_rests_back ? date_rest_back(k, frame, bar) : frame - 2;
   }
   // A part placed again is where the operator put it in this frame, measured or not; the frames
   // before, since it was lost, may show it there already.
@@ -562,6 +566,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     s.recent.emplace_back(frame, image.clone());
     if (static_cast<int>(s.recent.size()) > options_.follow_back_frames) s.recent.pop_front();
   }
+  if (options_.rest_recheck && !s.supports.empty()) recheck_rests(frame, image, resting);
   if (options_.rest_turn) watch_rest_turns(frame, image, map, resting);
   if (options_.witness_placements) watch_placements(frame, image);
   const OcclusionMap after = occlusion_map();
@@ -648,7 +653,11 @@ void ModelPoseTracker::follow_back(size_t k, int frame, double bar) {
 int ModelPoseTracker::date_rest_back(size_t k, int frame, double bar, int seen_for) {
   State& s = *state_;
   int earliest = frame - seen_for + 1;
-  // Its rest is seen over the last `seen_for` frames; the ones before are asked, latest first.
+  // Its rest is seen over the last `seen_for` frames (its image still there): reported at it,
+  // not at their measurements' own depths, which scatter by millimetres.
+  for (int f = std::max(earliest, 0); f < frame; ++f)
+    if (PoseSample& sample = s.tracks.samples[k][f]; sample.valid) sample.pose = s.world_T_camera * s.camera_T_part[k];
+  // The ones before are asked, latest first.
   const OcclusionMap map = occlusion_map();
   for (auto it = s.recent.rbegin(); it != s.recent.rend(); ++it) {
     const int f = it->first;
@@ -888,31 +897,34 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
   const State& s = *state_;
   // Scored on what the furniture and the other parts leave visible (its own stale pose hides nothing).
   const OcclusionMap map = occlusion_map(k);
-  if (std::optional<RegionFrameResult> found = rest_search(image, k, map, options_.rest_search_radii, false)) return found;
+  if (std::optional<RegionFrameResult> found = rest_search(image, k, map, {.radii = options_.rest_search_radii}))
+    return found;
   // Not within the plain reach: the longer it has been lost, the farther it may have been
   // carried before it was put down. Beyond the plain reach only on the evidence of a part in
   // full view.
   const int frames = std::max(s.unseen[k] - options_.rest_search_growth_after, 0);
   const double radii = std::min(options_.rest_search_radii + options_.rest_search_growth * frames, options_.rest_search_max_radii);
   if (radii > options_.rest_search_radii)
-    if (std::optional<RegionFrameResult> found = rest_search(image, k, map, radii, true)) return found;
+    if (std::optional<RegionFrameResult> found = rest_search(image, k, map, {.radii = radii, .beyond = true})) return found;
   // Not as it stood: perhaps laid on a side (a box put down on its side), within the plain reach
   // (the search beyond it on the sides too measured slower and found nothing more).
   if (!options_.rest_search_faces) return std::nullopt;
-  return rest_search(image, k, map, options_.rest_search_radii, false, true);
+  return rest_search(image, k, map, {.radii = options_.rest_search_radii, .other_faces = true});
 }
 
 std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k, const OcclusionMap& map,
-                                                               double radii, bool beyond, bool other_faces) const {
+                                                               const RestSearchArea& area) const {
   const State& s = *state_;
+  const std::vector<SupportLevel>& supports = area.levels ? *area.levels : s.supports;
+  const bool beyond = area.beyond, other_faces = area.other_faces;
   const ContourModel& model = *contours_[k];
   const Pose& last = s.camera_T_part[k];
   const Eigen::Vector3d c = last * model.centre();
   if (c.z() < 0.05) return std::nullopt;
   // Where its centre's image may be now: a grid around where it was last seen.
   const double radius_px = model.radius() * s.intrinsics.fx / c.z();
-  const double reach = std::max(radii * radius_px, 60.0);
-  const double base_reach = std::max(options_.rest_search_radii * radius_px, 60.0);
+  const double reach = std::max(area.radii * radius_px, area.min_reach_px);
+  const double base_reach = std::max(options_.rest_search_radii * radius_px, area.min_reach_px);
   const double step = std::max(radius_px / options_.rest_search_density, 6.0);
   const Eigen::Vector2d at = centre_in_image(k, last) + Eigen::Vector2d(s.intrinsics.cx, s.intrinsics.cy);
   std::vector<Eigen::Vector2d> pixels;
@@ -924,7 +936,7 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     }
   // Turned about the vertical from its last rest: as it was last seen (a carried part is mostly
   // put down as it was held), and evenly around that; on another face (rest_search_faces), evenly.
-  const Eigen::Matrix3d& rest = s.rest_rotation[k];
+  const Eigen::Matrix3d rest = area.level ? standing_level(s.rest_rotation[k]) : s.rest_rotation[k];
   const Eigen::Matrix3d turned = s.world_T_camera.linear() * last.linear() * rest.transpose();
   const double seen_turn = std::atan2(turned(1, 0), turned(0, 0));
   const int turn_count = std::max(options_.rest_search_turns, 1);
@@ -937,7 +949,7 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     // (On its sides, half as many: the four sides are tried each.)
     const int count = other_faces ? std::max(turn_count / 2, 1) : turn_count;
     for (int i = 0; i < count; ++i) turns.push_back((other_faces ? 0.0 : seen_turn) + 2 * M_PI * i / count);
-    for (RestingCandidate& c : resting_candidates(s.supports, resting[face], orientations[face], turns, s.world_T_camera,
+    for (RestingCandidate& c : resting_candidates(supports, resting[face], orientations[face], turns, s.world_T_camera,
                                                   s.intrinsics, pixels, furniture_)) {
       c.face = face;
       candidates.push_back(c);
@@ -985,7 +997,7 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
           q.pixel += Eigen::Vector2d(du, dv);
           q.turn += dt;
           const std::optional<Pose> T =
-              resting_pose(s.supports[q.level].height, resting[q.face], orientations[q.face], q.turn, s.world_T_camera,
+              resting_pose(supports[q.level].height, resting[q.face], orientations[q.face], q.turn, s.world_T_camera,
                            s.intrinsics, q.pixel);
           if (!T) continue;
           if (const double v = score(*T, band); v > best) {
@@ -1041,6 +1053,59 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
   }
   if (best && options_.rest_search_half_turn_ratio > 0) best = by_print(image, k, map, *best);
   return best;
+}
+
+void ModelPoseTracker::recheck_rests(int frame, const cv::Mat& image, const std::vector<bool>& resting) {
+  State& s = *state_;
+  if (frame % std::max(options_.rest_recheck_every, 1) != 0) return;
+  // Where a part can stand: the furniture, and the carriers' tops (a carrier not level has none).
+  std::vector<SupportLevel> levels = s.supports;
+  std::vector<size_t> carriers;  // of each level after the furniture's
+  for (size_t j = 0; j < models_.size(); ++j)
+    if (!parts_[j].planning)
+      if (const auto top = carrier_top(parts_[j].extent, s.world_T_camera * s.camera_T_part[j])) {
+        levels.push_back(support_level(*top));
+        carriers.push_back(j);
+      }
+  const double max_tilt = options_.rest_tilt_deg * M_PI / 180;
+  for (size_t k = 0; k < models_.size(); ++k) {
+    // (A start is where it was placed, as the operator or an estimator put it: not rechecked.)
+    if (!parts_[k].planning || !resting[k] || s.measured_at[k] != frame || s.rest_began[k] <= init_.frame) continue;
+    const Eigen::Vector3d& centre = contours_[k]->centre();
+    const Pose before = s.world_T_camera * s.camera_T_part[k];
+    if (stands_on(levels, models_[k].mesh, centre, before, options_.rest_recheck_height, max_tilt)) continue;
+    const int part = static_cast<int>(k);
+    const OcclusionMap map = occlusion_map(part);
+    const std::optional<RegionFrameResult> found =
+        rest_search(image, part, map, {.radii = options_.rest_recheck_across, .min_reach_px = 0, .level = true, .levels = &levels});
+    if (!found) continue;
+    // Where it shows (its depth aside, which the silhouette gives weakly), and as clearly.
+    const double radius_px = contours_[k]->radius() * s.intrinsics.fx / (s.camera_T_part[k] * centre).z();
+    const double across = (centre_in_image(k, found->camera_T_part) - centre_in_image(k, s.camera_T_part[k])).norm();
+    const VisibleContrast now = visible_contrast(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map, part);
+    const VisibleContrast there = visible_contrast(image, s.intrinsics, *contours_[k], s.colors[k], found->camera_T_part, map, part);
+    if (across > options_.rest_recheck_across * radius_px || there.contrast < now.contrast - options_.rest_recheck_margin) continue;
+    // The whole rest was there: its samples so far move with it.
+    const Pose after = s.world_T_camera * found->camera_T_part;
+    auto& samples = s.tracks.samples[k];
+    for (int f = std::max(s.rest_began[k], 0); f <= frame; ++f)
+      if (samples[f].valid) samples[f].pose = after;
+    s.camera_T_part[k] = found->camera_T_part;
+    s.rest_world[k] = after;
+    s.rest_rotation[k] = after.linear();
+    s.centres[k].assign(3, centre_in_image(k, found->camera_T_part));
+    s.previous[k].reset();
+    s.rest_shots[k] = {};
+    std::string on = "the furniture";
+    for (size_t i = 0; i < carriers.size(); ++i)
+      if (stands_on({levels[s.supports.size() + i]}, models_[k].mesh, centre, after, options_.rest_recheck_height, max_tilt))
+        on = "part '" + models_[carriers[i]].id + "'";
+    const double moved_mm = 1e3 * (after * centre - before * centre).norm();
+    warnings_.push_back("part '" + models_[k].id + "', frames " + std::to_string(s.rest_began[k]) + "-" +
+                        std::to_string(frame) + ": its rest was tracked standing on nothing; it shows as well standing on " +
+                        on + ", " + std::to_string(static_cast<int>(std::lround(moved_mm))) +
+                        " mm away along its line of sight, and rests there");
+  }
 }
 
 RegionFrameResult ModelPoseTracker::by_print(const cv::Mat& image, int k, const OcclusionMap& map,

@@ -121,6 +121,16 @@ struct ModelTrackerOptions {
   // (on a carried tray) does not refuse the part found standing level.
   bool rest_tilt_from_level = true;
   double rest_confirm_mm = 10.0;        // between the two frames' finds
+  // A part tracked to a rest that stands on nothing (tilted, floating, sunk: its depth off along
+  // its line of sight, which a silhouette gives weakly; waiter_0's sugar box 17 cm deep, tilted
+  // 18 degrees, on the tray) is looked for where it could stand, within the plain reach of
+  // where it shows, on the furniture and on the tops of the carriers at rest; the find is taken
+  // when it stands out `rest_recheck_margin` more than the rest does.
+  bool rest_recheck = true;
+  int rest_recheck_every = 6;           // frames, while it rests on nothing
+  double rest_recheck_height = 0.02;    // m: its lowest point from a level it stands on
+  double rest_recheck_margin = 0.05;    // of contrast
+  double rest_recheck_across = 0.25;    // of its radius: the find's centre from the rest's, in the image
   // A part found at rest after a gap is followed back into the gap through the last frames
   // (kept while a part is not seen), as long as it is seen there: the end of the carry it was
   // lost in (its last approach, hidden from the search while it still moved) dates the release.
@@ -265,11 +275,24 @@ private:
   // Part k looked for where it could have come to rest on the furniture (rest_search options);
   // the best candidate that passes the rules that judge it on its visible lines, if any.
   std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k) const;
-  // The search within `radii` of its radii (beyond: only outside the plain reach, on stricter evidence).
-  // On the faces other than the last rest's (`other_faces`: rest_search_faces), on the same strict evidence.
+  // Where the rest search looks: within `radii` of the part's radii (at least `min_reach_px`)
+  // of where it was last seen (`beyond`: only outside the plain reach, on stricter evidence); on
+  // the faces other than its last rest's (`other_faces`: rest_search_faces, on the same strict
+  // evidence); on `levels` (none: the furniture's); stood `level` from its last rest's
+  // orientation rather than as that was (a rest that stands on nothing: recheck_rests).
+  struct RestSearchArea {
+    double radii = 3.0;
+    double min_reach_px = 60.0;
+    bool beyond = false, other_faces = false, level = false;
+    const std::vector<SupportLevel>* levels = nullptr;
+  };
   // `map`: what the furniture and the other parts hide (occlusion_map(k)).
-  std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, const OcclusionMap& map, double radii,
-                                               bool beyond, bool other_faces = false) const;
+  std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, const OcclusionMap& map,
+                                               const RestSearchArea& area) const;
+  // Parts measured at rest in `frame` standing on no support (the furniture's, a resting
+  // carrier's top): looked for where they could stand there; a find that stands out more is
+  // where the whole rest was.
+  void recheck_rests(int frame, const cv::Mat& image, const std::vector<bool>& resting);
   // A find of the rest search, or the same turned half round about the vertical when the part's
   // print says so (rest_search_half_turn_ratio).
   RegionFrameResult by_print(const cv::Mat& image, int k, const OcclusionMap& map, const RegionFrameResult& found) const;

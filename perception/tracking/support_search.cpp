@@ -43,6 +43,26 @@ std::vector<SupportLevel> support_levels(const std::vector<FurnitureMesh>& furni
   return levels;
 }
 
+SupportLevel support_level(const std::vector<Eigen::Vector3d>& polygon) {
+  SupportLevel level;
+  for (const auto& v : polygon) level.height += v.z() / static_cast<double>(polygon.size());
+  for (size_t i = 1; i + 1 < polygon.size(); ++i)
+    level.triangles.push_back({polygon[0].head<2>(), polygon[i].head<2>(), polygon[i + 1].head<2>()});
+  for (const auto& v : polygon) level.bounds.extend(v.head<2>());
+  return level;
+}
+
+bool stands_on(const std::vector<SupportLevel>& levels, const RenderMesh& mesh, const Eigen::Vector3d& centre,
+               const Pose& world_T_part, double height_tolerance, double max_tilt) {
+  const Eigen::Matrix3d& R = world_T_part.linear();
+  if (std::abs(R.row(2).cwiseAbs().maxCoeff()) < std::cos(max_tilt)) return false;
+  const Eigen::Vector3d at = world_T_part * centre;
+  const double bottom = at.z() - centre_height(mesh, centre, R);
+  return std::any_of(levels.begin(), levels.end(), [&](const SupportLevel& l) {
+    return std::abs(bottom - l.height) <= height_tolerance && l.holds(at.head<2>());
+  });
+}
+
 double centre_height(const RenderMesh& mesh, const Eigen::Vector3d& centre, const Eigen::Matrix3d& world_R_part) {
   const Eigen::Vector3d up = world_R_part.transpose().col(2);  // the vertical in the part's frame
   double lowest = std::numeric_limits<double>::max();

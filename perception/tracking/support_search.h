@@ -34,6 +34,10 @@ struct SupportLevel {
 std::vector<SupportLevel> support_levels(const std::vector<FurnitureMesh>& furniture, double max_tilt = 0.05,
                                          double merge = 0.003, double min_area = 1e-4);
 
+// A carrier's top (carrier_top.h: a polygon in the world, nearly level) as a support level at
+// its mean height: a part put down on a tray rests there.
+SupportLevel support_level(const std::vector<Eigen::Vector3d>& polygon);
+
 // How far the centre of a mesh stands above its lowest point at that orientation (world z).
 double centre_height(const RenderMesh& mesh, const Eigen::Vector3d& centre, const Eigen::Matrix3d& world_R_part);
 
@@ -61,6 +65,12 @@ struct RestingCandidate {
   size_t level = 0;
   size_t face = 0;  // which of the orientations searched it rests at
 };
+
+// Whether a part at `world_T_part` stands on one of `levels`: its lowest point within
+// `height_tolerance` (m) of the level's height, its centre over the level, its axis nearest up
+// within `max_tilt` (rad) of the vertical.
+bool stands_on(const std::vector<SupportLevel>& levels, const RenderMesh& mesh, const Eigen::Vector3d& centre,
+               const Pose& world_T_part, double height_tolerance, double max_tilt);
 
 // The orientations of a part laid on each side of its box (a box put down on its side, not as
 // it stood at `last_rest`): the part's axes +-x, +-y, +-z turned onto the world's down, those

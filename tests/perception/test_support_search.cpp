@@ -1,11 +1,15 @@
-// Where a lost part may have been put down: the orientations the rest search tries.
+// Where a lost part may have been put down: the orientations the rest search tries; whether a
+// rest stands on a support.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 
+#include "perception/render/render_mesh.h"
+#include "perception/tracking/carrier_top.h"
 #include "perception/tracking/support_search.h"
 
 using namespace demoplan::perception;
+using demoplan::Pose;
 
 namespace {
 
@@ -65,4 +69,45 @@ TEST(StandingLevel, TheAxisNearestDownTurnedOntoItByTheSmallestRotation) {
   EXPECT_TRUE(down_axis(standing_level(on_side)).isApprox(Eigen::Vector3d::UnitY(), 1e-12));
   // Already level: unchanged.
   EXPECT_TRUE(standing_level(level).isApprox(level, 1e-12));
+}
+
+TEST(StandsOn, OnATraysTopLevelWithinTheToleranceAndOverIt) {
+  // A tray 0.4 x 1.0 x 0.015 m, its centre at (0.5, 1.0, 0.7), turned 30 degrees about the vertical.
+  Pose tray = Pose::Identity();
+  tray.linear() = Eigen::AngleAxisd(M_PI / 6, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  tray.translation() << 0.5, 1.0, 0.7;
+  const auto top = carrier_top(Eigen::AlignedBox3d(Eigen::Vector3d(-0.2, -0.5, -0.0075), Eigen::Vector3d(0.2, 0.5, 0.0075)), tray);
+  ASSERT_TRUE(top);
+  const SupportLevel level = support_level(*top);
+  EXPECT_NEAR(level.height, 0.7075, 1e-12);
+  EXPECT_TRUE(level.holds(Eigen::Vector2d(0.5, 1.0)));
+  // Along its long side, 0.45 m from the centre: on it; across, 0.25 m: beside it.
+  const Eigen::Vector2d along = tray.linear().col(1).head<2>(), across = tray.linear().col(0).head<2>();
+  EXPECT_TRUE(level.holds(Eigen::Vector2d(0.5, 1.0) + 0.45 * along));
+  EXPECT_FALSE(level.holds(Eigen::Vector2d(0.5, 1.0) + 0.25 * across));
+
+  // A box 0.1 x 0.1 x 0.2 m (its centre at its frame's origin) standing on the tray.
+  const RenderMesh box = box_mesh(Eigen::Vector3d(0.1, 0.1, 0.2), cv::Vec3f(1, 1, 1));
+  const Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  auto at = [&](const Eigen::Vector3d& p, const Eigen::Matrix3d& R = Eigen::Matrix3d::Identity()) {
+    Pose T = Pose::Identity();
+    T.linear() = R;
+    T.translation() = p;
+    return T;
+  };
+  const double tolerance = 0.02, tilt = 10 * M_PI / 180;
+  EXPECT_TRUE(stands_on({level}, box, centre, at({0.5, 1.0, 0.8075}), tolerance, tilt));
+  EXPECT_TRUE(stands_on({level}, box, centre, at({0.5, 1.0, 0.8075 + 0.015}), tolerance, tilt)) << "1.5 cm above: within";
+  EXPECT_FALSE(stands_on({level}, box, centre, at({0.5, 1.0, 0.8075 + 0.03}), tolerance, tilt)) << "floating 3 cm";
+  EXPECT_FALSE(stands_on({level}, box, centre, at({0.5, 1.0, 0.8075 - 0.08}), tolerance, tilt)) << "sunk 8 cm";
+  EXPECT_FALSE(stands_on({level}, box, centre, at(Eigen::Vector3d(0.5, 1.0, 0.8075) + 0.25 * tray.linear().col(0)), tolerance,
+                         tilt))
+      << "beside the tray, at its top's height";
+  // Laid on its side (its lowest point 5 cm below its centre) and tilted.
+  const Eigen::Matrix3d on_side = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  EXPECT_TRUE(stands_on({level}, box, centre, at({0.5, 1.0, 0.7575}, on_side), tolerance, tilt));
+  const Eigen::Matrix3d tilted = Eigen::AngleAxisd(18 * M_PI / 180, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  EXPECT_FALSE(stands_on({level}, box, centre, at({0.5, 1.0, 0.8075}, tilted), tolerance, tilt)) << "18 degrees off level";
+  // No level: nothing to stand on.
+  EXPECT_FALSE(stands_on({}, box, centre, at({0.5, 1.0, 0.8075}), tolerance, tilt));
 }
