@@ -1073,7 +1073,13 @@ void ModelPoseTracker::recheck_rests(int frame, const cv::Mat& image, const std:
     if (!parts_[k].planning || !resting[k] || s.measured_at[k] != frame || s.rest_began[k] <= init_.frame) continue;
     const Eigen::Vector3d& centre = contours_[k]->centre();
     const Pose before = s.world_T_camera * s.camera_T_part[k];
-    if (stands_on(levels, models_[k].mesh, centre, before, options_.rest_recheck_height, max_tilt)) continue;
+    // Standing on another part (a stack) counts too: it is not looked for elsewhere then.
+    std::vector<SupportLevel> under = levels;
+    for (size_t j = 0; j < models_.size(); ++j)
+      if (j != k && parts_[j].planning)
+        if (const auto top = carrier_top(parts_[j].extent, s.world_T_camera * s.camera_T_part[j]))
+          under.push_back(support_level(*top));
+    if (stands_on(under, models_[k].mesh, centre, before, options_.rest_recheck_height, max_tilt)) continue;
     const int part = static_cast<int>(k);
     const OcclusionMap map = occlusion_map(part);
     const std::optional<RegionFrameResult> found =

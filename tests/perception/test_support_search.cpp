@@ -110,4 +110,11 @@ TEST(StandsOn, OnATraysTopLevelWithinTheToleranceAndOverIt) {
   EXPECT_FALSE(stands_on({level}, box, centre, at({0.5, 1.0, 0.8075}, tilted), tolerance, tilt)) << "18 degrees off level";
   // No level: nothing to stand on.
   EXPECT_FALSE(stands_on({}, box, centre, at({0.5, 1.0, 0.8075}), tolerance, tilt));
+  // Stacked: on the top of the same box standing on the tray (the recheck counts the other
+  // parts' tops as levels it may stand on).
+  const auto box_top = carrier_top(Eigen::AlignedBox3d(Eigen::Vector3d(-0.05, -0.05, -0.1), Eigen::Vector3d(0.05, 0.05, 0.1)),
+                                   at({0.5, 1.0, 0.8075}));
+  ASSERT_TRUE(box_top);
+  EXPECT_TRUE(stands_on({level, support_level(*box_top)}, box, centre, at({0.5, 1.0, 1.0075}), tolerance, tilt));
+  EXPECT_FALSE(stands_on({level}, box, centre, at({0.5, 1.0, 1.0075}), tolerance, tilt));
 }
