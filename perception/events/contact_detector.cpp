@@ -357,6 +357,24 @@ ContactAnalysis detect_contacts(const PoseTracks& tracks, const ContactDetectorO
     all.insert(all.end(), m.begin(), m.end());
   }
   std::sort(all.begin(), all.end(), [](auto& x, auto& y) { return x.start < y.start; });
+  // One hand: a part whose motion runs on unseen into another part's grasp, seen taken, was set
+  // down in its gap before that grasp (the hand was free for it): its release is put there
+  // (hidden_event_fraction of the way from where it was last seen), not after the other's carry.
+  std::vector<std::vector<bool>> usable(n);
+  for (int k = 0; k < n; ++k) usable[k] = usable_samples(tracks.samples[k], o);
+  for (MotionInterval& x : all)
+    for (const MotionInterval& y : all) {
+      if (x.object == y.object || !tracks.planning[x.object] || !tracks.planning[y.object] || y.start <= x.start ||
+          !overlaps(x, y) || y.start >= static_cast<int>(usable[y.object].size()) || !usable[y.object][y.start])
+        continue;
+      int last_seen = std::min(x.end, static_cast<int>(usable[x.object].size())) - 1;
+      while (last_seen > x.start && !usable[x.object][last_seen]) --last_seen;
+      if (last_seen >= y.start || move_together(tracks, x, y, o.co_motion_tolerance)) continue;
+      const int end = last_seen + std::max(1, static_cast<int>(std::lround(o.hidden_event_fraction * (y.start - last_seen))));
+      if (end - x.start < o.min_carry_frames) continue;  // too short for a carry: an estimate's jump
+      x.end = end;
+      x.end_confidence = std::min(x.end_confidence, 0.5);
+    }
   // Groups of motions that overlap in time.
   std::vector<bool> done(all.size(), false);
   for (size_t i = 0; i < all.size(); ++i) {

@@ -262,6 +262,29 @@ TEST(ContactDetector, OneObjectAtATime) {
   EXPECT_EQ(a.rejected.size(), 1u);
 }
 
+TEST(ContactDetector, APartSetDownUnseenBeforeAnotherIsTakenWasReleasedInItsGap) {
+  // P0 carried 10-40, last seen moving at 20, seen at rest again from 46 (hidden behind P1 and
+  // the hand); P1 taken at 30 in plain view and carried to 50. One hand: P0 was set down before
+  // 30, 0.62 of the way from 20; its carry does not overlap P1's, and both are kept.
+  PoseTracks t = make_tracks(100, {at(0, 0, 0.8), at(0.3, 0, 0.8)},
+                             {{0, 10, 40, at(0.6, 0.8, 0.8)}, {1, 30, 50, at(0.3, 0.3, 0.8)}});
+  for (int f = 21; f < 46; ++f) t.samples[0][f].valid = false;
+  const ContactAnalysis a = detect_contacts(t);
+  ASSERT_EQ(a.carries.size(), 2u);
+  EXPECT_EQ(a.carries[0].object, 0);
+  EXPECT_EQ(a.carries[0].start, 10);
+  EXPECT_EQ(a.carries[0].end, 20 + 6);  // 0.62 of the 10 frames from last seen to P1's grasp
+  EXPECT_LE(a.carries[0].end_confidence, 0.5);
+  EXPECT_EQ(a.carries[1].object, 1);
+  EXPECT_EQ(a.carries[1].start, 30);
+  EXPECT_TRUE(a.rejected.empty());
+  // Seen moving on while P1 is taken (both in plain view): one of them is rejected, as before.
+  t.samples[0][32].valid = true;
+  const ContactAnalysis b = detect_contacts(t);
+  EXPECT_EQ(b.carries.size(), 1u);
+  EXPECT_EQ(b.rejected.size(), 1u);
+}
+
 TEST(TrackSmoothing, NoLagAtTheEvents) {
   const PoseTracks t = make_tracks(100, {at(0, 0, 0.8)}, {{0, 20, 60, at(0.5, 0.2, 0.8)}}, 0.001, 3);
   const ContactAnalysis a = detect_contacts(t);
