@@ -1,8 +1,6 @@
 #include "perception/tracking/model_pose_tracker.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <deque>
 #include <future>
@@ -936,7 +934,7 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     }
   // Turned about the vertical from its last rest: as it was last seen (a carried part is mostly
   // put down as it was held), and evenly around that; on another face (rest_search_faces), evenly.
-  const Eigen::Matrix3d rest = area.level ? standing_level(s.rest_rotation[k]) : s.rest_rotation[k];
+  const Eigen::Matrix3d rest = area.stood_level ? standing_level(s.rest_rotation[k]) : s.rest_rotation[k];
   const Eigen::Matrix3d turned = s.world_T_camera.linear() * last.linear() * rest.transpose();
   const double seen_turn = std::atan2(turned(1, 0), turned(0, 0));
   const int turn_count = std::max(options_.rest_search_turns, 1);
@@ -1083,7 +1081,7 @@ void ModelPoseTracker::recheck_rests(int frame, const cv::Mat& image, const std:
     const int part = static_cast<int>(k);
     const OcclusionMap map = occlusion_map(part);
     const std::optional<RegionFrameResult> found =
-        rest_search(image, part, map, {.radii = options_.rest_recheck_across, .min_reach_px = 0, .level = true, .levels = &levels});
+        rest_search(image, part, map, {.radii = options_.rest_recheck_across, .min_reach_px = 0, .stood_level = true, .levels = &levels});
     if (!found) continue;
     // Where it shows (its depth aside, which the silhouette gives weakly), and as clearly.
     const double radius_px = contours_[k]->radius() * s.intrinsics.fx / (s.camera_T_part[k] * centre).z();

@@ -123,9 +123,10 @@ struct ModelTrackerOptions {
   double rest_confirm_mm = 10.0;        // between the two frames' finds
   // A part tracked to a rest that stands on nothing (tilted, floating, sunk: its depth off along
   // its line of sight, which a silhouette gives weakly; waiter_0's sugar box 17 cm deep, tilted
-  // 18 degrees, on the tray) is looked for where it could stand, within the plain reach of
-  // where it shows, on the furniture and on the tops of the carriers at rest; the find is taken
-  // when it stands out `rest_recheck_margin` more than the rest does.
+  // 18 degrees, on the tray; standing on another part counts as standing) is looked for where it
+  // could stand level, on the furniture and on the carriers' tops, within `rest_recheck_across`
+  // of its radius of where it shows; the find is taken when it stands out at most
+  // `rest_recheck_margin` less than the rest does (the rest's own colours favour the rest).
   bool rest_recheck = true;
   int rest_recheck_every = 6;           // frames, while it rests on nothing
   double rest_recheck_height = 0.02;    // m: its lowest point from a level it stands on
@@ -278,20 +279,20 @@ private:
   // Where the rest search looks: within `radii` of the part's radii (at least `min_reach_px`)
   // of where it was last seen (`beyond`: only outside the plain reach, on stricter evidence); on
   // the faces other than its last rest's (`other_faces`: rest_search_faces, on the same strict
-  // evidence); on `levels` (none: the furniture's); stood `level` from its last rest's
+  // evidence); on `levels` (none: the furniture's); `stood_level` from its last rest's
   // orientation rather than as that was (a rest that stands on nothing: recheck_rests).
   struct RestSearchArea {
     double radii = 3.0;
     double min_reach_px = 60.0;
-    bool beyond = false, other_faces = false, level = false;
+    bool beyond = false, other_faces = false, stood_level = false;
     const std::vector<SupportLevel>* levels = nullptr;
   };
   // `map`: what the furniture and the other parts hide (occlusion_map(k)).
   std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, const OcclusionMap& map,
                                                const RestSearchArea& area) const;
-  // Parts measured at rest in `frame` standing on no support (the furniture's, a resting
-  // carrier's top): looked for where they could stand there; a find that stands out more is
-  // where the whole rest was.
+  // Parts measured at rest in `frame` standing on no support (the furniture's, a carrier's or
+  // another part's top): looked for where they could stand (rest_recheck); a find that shows
+  // them as well is where the whole rest was.
   void recheck_rests(int frame, const cv::Mat& image, const std::vector<bool>& resting);
   // A find of the rest search, or the same turned half round about the vertical when the part's
   // print says so (rest_search_half_turn_ratio).

@@ -55,7 +55,7 @@ SupportLevel support_level(const std::vector<Eigen::Vector3d>& polygon) {
 bool stands_on(const std::vector<SupportLevel>& levels, const RenderMesh& mesh, const Eigen::Vector3d& centre,
                const Pose& world_T_part, double height_tolerance, double max_tilt) {
   const Eigen::Matrix3d& R = world_T_part.linear();
-  if (std::abs(R.row(2).cwiseAbs().maxCoeff()) < std::cos(max_tilt)) return false;
+  if (R.row(2).cwiseAbs().maxCoeff() < std::cos(max_tilt)) return false;  // its axis nearest up
   const Eigen::Vector3d at = world_T_part * centre;
   const double bottom = at.z() - centre_height(mesh, centre, R);
   return std::any_of(levels.begin(), levels.end(), [&](const SupportLevel& l) {

@@ -34,8 +34,8 @@ struct SupportLevel {
 std::vector<SupportLevel> support_levels(const std::vector<FurnitureMesh>& furniture, double max_tilt = 0.05,
                                          double merge = 0.003, double min_area = 1e-4);
 
-// A carrier's top (carrier_top.h: a polygon in the world, nearly level) as a support level at
-// its mean height: a part put down on a tray rests there.
+// A part's top (carrier_top.h: a polygon in the world, nearly level) as a support level at its
+// mean height: a part put down on a tray, or on another part, rests there.
 SupportLevel support_level(const std::vector<Eigen::Vector3d>& polygon);
 
 // How far the centre of a mesh stands above its lowest point at that orientation (world z).
