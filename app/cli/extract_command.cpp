@@ -1,5 +1,4 @@
 // demoplan-cli extract: grasp/release events and part poses from a demonstration video.
-#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -10,6 +9,7 @@
 #include "app/cli/video_commands.h"
 #include "core/demo/demonstration.h"
 #include "core/error.h"
+#include "core/io/file_extension.h"
 #include "perception/camera/camera_model.h"
 #include "perception/extraction/extract_demonstration.h"
 #include "perception/extraction/tracks_file.h"
@@ -37,11 +37,7 @@ struct ExtractCliOptions {
 
 // The model tracker's start: a demoplan-tracker-init file, or a pose estimator's BOP results
 // CSV (by extension), whose poses are in the camera's frame.
-bool is_bop_csv(const std::string& init) {
-  std::string extension = std::filesystem::path(init).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".csv";
-}
+bool is_bop_csv(const std::string& init) { return lowercase_extension(init) == ".csv"; }
 
 perception::TrackerInit model_tracker_start(const std::string& init, const perception::MarkerScene& scene,
                                             const perception::Camera& camera, const std::string& camera_path) {

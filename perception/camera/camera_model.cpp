@@ -1,13 +1,13 @@
 #include "perception/camera/camera_model.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 
 #include <opencv2/calib3d.hpp>
 
 #include "core/error.h"
+#include "core/io/file_extension.h"
 #include "perception/camera/calibration_xml.h"
 #include "perception/camera/calibration_yaml.h"
 #include "perception/io/pose_json.h"
@@ -110,8 +110,7 @@ cv::Point2d Camera::project(const Eigen::Vector3d& p) const {
 
 Camera load_camera(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, "", "camera file not found");
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  const std::string ext = lowercase_extension(path);
   if (ext == ".json") return load_json_camera(path);
   // OpenCV calibration files, with our readers: cv::FileStorage's parsers hang or crash on some
   // malformed files (calibration_yaml.h, calibration_xml.h).

@@ -15,6 +15,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.h"
+#include "core/io/file_extension.h"
 #include "core/statistics.h"
 #include "perception/markers/marker_detector.h"
 #include "perception/video/video_reader.h"
@@ -33,8 +34,7 @@ public:
   explicit FrameSource(const std::string& path) : path_(path) {
     if (fs::is_directory(path)) {
       for (const auto& e : fs::directory_iterator(path)) {
-        std::string ext = e.path().extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        const std::string ext = lowercase_extension(e.path());
         if (e.is_regular_file() && (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp" ||
                                     ext == ".tif" || ext == ".tiff"))
           images_.push_back(e.path());
