@@ -362,19 +362,22 @@ ContactAnalysis detect_contacts(const PoseTracks& tracks, const ContactDetectorO
   // (hidden_event_fraction of the way from where it was last seen), not after the other's carry.
   std::vector<std::vector<bool>> usable(n);
   for (int k = 0; k < n; ++k) usable[k] = usable_samples(tracks.samples[k], o);
-  for (MotionInterval& x : all)
+  for (MotionInterval& x : all) {
+    if (!tracks.planning[x.object]) continue;
+    // The last frame x is seen in its motion (a clip below keeps it: the frames cut were unseen).
+    int last_seen = std::min(x.end, static_cast<int>(usable[x.object].size())) - 1;
+    while (last_seen > x.start && !usable[x.object][last_seen]) --last_seen;
     for (const MotionInterval& y : all) {
-      if (x.object == y.object || !tracks.planning[x.object] || !tracks.planning[y.object] || y.start <= x.start ||
-          !overlaps(x, y) || y.start >= static_cast<int>(usable[y.object].size()) || !usable[y.object][y.start])
+      if (x.object == y.object || !tracks.planning[y.object] || y.start <= x.start || y.start <= last_seen ||
+          !overlaps(x, y) || y.start >= static_cast<int>(usable[y.object].size()) || !usable[y.object][y.start] ||
+          move_together(tracks, x, y, o.co_motion_tolerance))
         continue;
-      int last_seen = std::min(x.end, static_cast<int>(usable[x.object].size())) - 1;
-      while (last_seen > x.start && !usable[x.object][last_seen]) --last_seen;
-      if (last_seen >= y.start || move_together(tracks, x, y, o.co_motion_tolerance)) continue;
       const int end = last_seen + std::max(1, static_cast<int>(std::lround(o.hidden_event_fraction * (y.start - last_seen))));
       if (end - x.start < o.min_carry_frames) continue;  // too short for a carry: an estimate's jump
       x.end = end;
       x.end_confidence = std::min(x.end_confidence, 0.5);
     }
+  }
   // Groups of motions that overlap in time.
   std::vector<bool> done(all.size(), false);
   for (size_t i = 0; i < all.size(); ++i) {
