@@ -19,6 +19,7 @@
 #include "perception/render/part_meshes.h"
 #include "perception/render/rasterizer.h"
 #include "perception/tracking/appearance_error.h"
+#include "perception/tracking/color_blobs.h"
 #include "perception/tracking/carrier_top.h"
 #include "perception/tracking/contour_model_file.h"
 #include "perception/tracking/light_correction.h"
@@ -534,7 +535,10 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     sample.confidence = confidence_of(r);
     s.measured_at[k] = frame;
     seen.push_back({part, sample});
-    if (found_resting) follow_back(k, frame, bar);
+    // Found at rest: the frames before that show it there are at its rest (the hand withdrawing
+    // after setting it down), and from the earliest of them it is followed back into its carry
+    // (tracked free there from the rest, a frame's slide in depth would carry on into the rest).
+    if (found_resting) follow_back(k, date_rest_back(k, frame, bar, 1), bar);
     // Come to rest (three frames still): the frames before may show it there already.
     if (resting[k] && !s.was_resting[k]) s.rest_began[k] = options_.date_rests_back ? date_rest_back(k, frame, bar) : frame - 2;
   }
@@ -906,8 +910,33 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     if (std::optional<RegionFrameResult> found = rest_search(image, k, map, {.radii = radii, .beyond = true})) return found;
   // Not as it stood: perhaps laid on a side (a box put down on its side), within the plain reach
   // (the search beyond it on the sides too measured slower and found nothing more).
-  if (!options_.rest_search_faces) return std::nullopt;
-  return rest_search(image, k, map, {.radii = options_.rest_search_radii, .other_faces = true});
+  if (options_.rest_search_faces)
+    if (std::optional<RegionFrameResult> found = rest_search(image, k, map, {.radii = options_.rest_search_radii, .other_faces = true}))
+      return found;
+  // Lost for a while: wherever its colours show, beyond the reach searched.
+  // (Every `global_search_every` frames lost, and in the frame after a find: the whole frame costs.)
+  if (!options_.global_search || s.unseen[k] < options_.global_search_after ||
+      (!s.rest_find[k] && s.unseen[k] % std::max(options_.global_search_every, 1) != 0))
+    return std::nullopt;
+  const Eigen::Vector3d c = s.camera_T_part[k] * contours_[k]->centre();
+  const double radius_px = contours_[k]->radius() * s.intrinsics.fx / c.z();
+  const Eigen::Vector2d at = centre_in_image(k, s.camera_T_part[k]) + Eigen::Vector2d(s.intrinsics.cx, s.intrinsics.cy);
+  // The blobs most like it: in its colours, and as large as it showed when last seen (the
+  // furniture's or the floor's tiles in colours near its own are larger or smaller).
+  const OcclusionMap all = occlusion_map();
+  const double shown = cv::countNonZero(all.labels == k + 1) / (all.scale * all.scale);
+  std::vector<std::pair<double, Eigen::Vector2d>> likeness;
+  for (const ColorBlob& b : color_blobs(image, s.colors[k], map, k, options_.global_blob_fraction * shown))
+    if ((b.centre - at).norm() > radii * radius_px)
+      likeness.push_back({b.probability * std::min(b.area, shown) / std::max(b.area, shown), b.centre});
+  std::sort(likeness.begin(), likeness.end(), [](auto& a, auto& b) { return a.first > b.first; });
+  std::vector<Eigen::Vector2d> around;
+  for (const auto& [v, centre] : likeness)
+    if (around.size() < static_cast<size_t>(options_.global_search_blobs)) around.push_back(centre);
+  if (around.empty()) return std::nullopt;
+  if (std::optional<RegionFrameResult> found = rest_search(image, k, map, {.radii = options_.global_search_radii, .min_reach_px = 0, .around = &around}))
+    return found;
+  return rest_search(image, k, map, {.radii = options_.global_search_radii, .min_reach_px = 0, .other_faces = true, .around = &around});
 }
 
 std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k, const OcclusionMap& map,
@@ -926,12 +955,13 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
   const double step = std::max(radius_px / options_.rest_search_density, 6.0);
   const Eigen::Vector2d at = centre_in_image(k, last) + Eigen::Vector2d(s.intrinsics.cx, s.intrinsics.cy);
   std::vector<Eigen::Vector2d> pixels;
-  for (double dy = -reach; dy <= reach; dy += step)
-    for (double dx = -reach; dx <= reach; dx += step) {
-      const Eigen::Vector2d p = at + Eigen::Vector2d(dx, dy);
-      if (beyond && std::max(std::abs(dx), std::abs(dy)) <= base_reach) continue;  // searched already
-      if (p.x() >= 0 && p.y() >= 0 && p.x() < s.image_size.width && p.y() < s.image_size.height) pixels.push_back(p);
-    }
+  for (const Eigen::Vector2d& centre : area.around ? *area.around : std::vector<Eigen::Vector2d>{at})
+    for (double dy = -reach; dy <= reach; dy += step)
+      for (double dx = -reach; dx <= reach; dx += step) {
+        const Eigen::Vector2d p = centre + Eigen::Vector2d(dx, dy);
+        if (beyond && std::max(std::abs(dx), std::abs(dy)) <= base_reach) continue;  // searched already
+        if (p.x() >= 0 && p.y() >= 0 && p.x() < s.image_size.width && p.y() < s.image_size.height) pixels.push_back(p);
+      }
   // Turned about the vertical from its last rest: as it was last seen (a carried part is mostly
   // put down as it was held), and evenly around that; on another face (rest_search_faces), evenly.
   const Eigen::Matrix3d rest = area.stood_level ? standing_level(s.rest_rotation[k]) : s.rest_rotation[k];
@@ -1030,12 +1060,18 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     if (visible < options_.rest_visible_fraction * r.lines || r.used_lines < options_.rest_used_fraction * visible ||
         r.contrast < options_.rest_contrast * s.reference_contrast[k])
       continue;
-    // Beyond the plain reach (grown with the time lost), or on another face than it rested on
-    // (more poses tried, more chances for a wrong one to fit): only on the evidence of a part in
-    // full view.
-    if ((beyond || other_faces) &&
-        (r.hidden_lines > 0.1 * r.lines || r.used_lines < 0.9 * r.lines || r.contrast < options_.search_contrast * s.reference_contrast[k]))
+    // Beyond the plain reach (grown with the time lost), on another face than it rested on, or
+    // wherever its colours show (more poses tried, more chances for a wrong one to fit): only on
+    // the evidence of a part in full view, standing out as clearly, or (where its colours show)
+    // its print there bearing it out.
+    if ((beyond || other_faces || area.around) && (r.hidden_lines > 0.1 * r.lines || r.used_lines < 0.9 * r.lines))
       continue;
+    if ((beyond || other_faces || area.around) && r.contrast < options_.search_contrast * s.reference_contrast[k]) {
+      if (!area.around) continue;
+      const PrintDifference d = print_difference(image, s.intrinsics, s.world_T_camera, models_[k].mesh, r.camera_T_part, map, k,
+                                                 options_.start_cover_difference);
+      if (d.pixels == 0 || d.outliers > options_.global_print_outliers * d.pixels) continue;
+    }
     // Still standing on the support it was put on: not tilted off it (off its last rest's
     // orientation, or off that stood level: rest_tilt_from_level), not lifted or sunk.
     const Eigen::Matrix3d world_R = s.world_T_camera.linear() * r.camera_T_part.linear();

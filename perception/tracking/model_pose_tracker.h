@@ -8,7 +8,8 @@
 // pose, reported invalid, and is looked for around it in the next frames (a grid of shifts
 // across the view scored by contrast, the best tracked from; then among the places on the
 // furniture where it could have been put down, standing as before or laid on a side,
-// support_search.h, judged on its visible lines).
+// support_search.h, judged on its visible lines; lost for longer, also where its colours show
+// anywhere in the frame, color_blobs.h).
 // A part found so is followed back into the frames it was missed in. A part seen in the last
 // two frames is predicted to go on as it moved (a carry). Parts are tracked nearest first; a
 // resting part that is not measured while another moves is held at its rest (not searched for)
@@ -132,6 +133,22 @@ struct ModelTrackerOptions {
   double rest_recheck_height = 0.02;    // m: its lowest point from a level it stands on
   double rest_recheck_margin = 0.05;    // of contrast
   double rest_recheck_across = 0.25;    // of its radius: the find's centre from the rest's, in the image
+  // A part lost for `global_search_after` frames and not found within the rest search's reach is
+  // looked for where its colours show in the frame (color_blobs.h: blobs beyond the plain reach
+  // at least `global_blob_fraction` as large as it showed when last seen, the
+  // `global_search_blobs` most like it, in colour and size), standing as at its last rest or laid on a side, within
+  // `global_search_radii` of its radii of each blob's centre. Taken only in full view, standing
+  // out as a find beyond the reach must, or at least `rest_contrast` when its print agrees with
+  // the frame there (appearance_error.h: at most `global_print_outliers` of its pixels differing
+  // by more than start_cover_difference): waiter_0 with the occluder, the cracker box put down on
+  // another face stands out 0.61 against its running mean's 0.69, its print within 2 of 255.
+  bool global_search = true;
+  int global_search_after = 4;
+  int global_search_every = 6;  // frames, while it stays lost (and in the frame after a find)
+  double global_blob_fraction = 0.1;
+  int global_search_blobs = 4;
+  double global_search_radii = 0.5;
+  double global_print_outliers = 0.05;
   // A part found at rest after a gap is followed back into the gap through the last frames
   // (kept while a part is not seen), as long as it is seen there: the end of the carry it was
   // lost in (its last approach, hidden from the search while it still moved) dates the release.
@@ -280,12 +297,15 @@ private:
   // of where it was last seen (`beyond`: only outside the plain reach, on stricter evidence); on
   // the faces other than its last rest's (`other_faces`: rest_search_faces, on the same strict
   // evidence); on `levels` (none: the furniture's); `stood_level` from its last rest's
-  // orientation rather than as that was (a rest that stands on nothing: recheck_rests).
+  // orientation rather than as that was (a rest that stands on nothing: recheck_rests); around
+  // each of `around` (image pixels) rather than where it was last seen (where its colours show:
+  // global_search, on the strict evidence, or a lower contrast with its print borne out).
   struct RestSearchArea {
     double radii = 3.0;
     double min_reach_px = 60.0;
     bool beyond = false, other_faces = false, stood_level = false;
     const std::vector<SupportLevel>* levels = nullptr;
+    const std::vector<Eigen::Vector2d>* around = nullptr;
   };
   // `map`: what the furniture and the other parts hide (occlusion_map(k)).
   std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, const OcclusionMap& map,
