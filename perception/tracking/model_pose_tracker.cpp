@@ -433,9 +433,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       end_hold(within_rest_hold(k, r.camera_T_part), false);
     }
     auto beyond_radius = [&](const Pose& T) {
-      const Eigen::Vector3d c = s.camera_T_part[k] * contours_[k]->centre();
-      return (centre_in_image(k, T) - centre_in_image(k, s.camera_T_part[k])).norm() >
-             contours_[k]->radius() * s.intrinsics.fx / c.z();
+      return (centre_in_image(k, T) - centre_in_image(k, s.camera_T_part[k])).norm() > radius_in_image(k, s.camera_T_part[k]);
     };
     // Placed by the operator in this frame: not looked for elsewhere.
     const bool placed = std::find(corrected.begin(), corrected.end(), k) != corrected.end();
@@ -709,8 +707,7 @@ void ModelPoseTracker::settle_start(const cv::Mat& image, size_t k) {
   const int area = cv::countNonZero(silhouette);
   if (area == 0 || cv::countNonZero(silhouette & ~hidden) < options_.settle_visible_fraction * area) return;
   const cv::Rect inside = cv::boundingRect(silhouette);
-  const Eigen::Vector3d c = s.camera_T_part[k] * contours_[k]->centre();
-  const int margin = static_cast<int>(std::ceil(contours_[k]->radius() * s.intrinsics.fx / c.z()));
+  const int margin = static_cast<int>(std::ceil(radius_in_image(k, s.camera_T_part[k])));
   const cv::Rect roi = cv::Rect(inside.x - margin, inside.y - margin, inside.width + 2 * margin, inside.height + 2 * margin) &
                        cv::Rect(cv::Point(0, 0), s.image_size);
   cv::Mat mask(roi.size(), CV_8U, cv::Scalar(cv::GC_PR_BGD));
@@ -830,6 +827,10 @@ Eigen::Vector2d ModelPoseTracker::centre_in_image(size_t k, const Pose& camera_T
   return {K.fx * c.x() / c.z(), K.fy * c.y() / c.z()};
 }
 
+double ModelPoseTracker::radius_in_image(size_t k, const Pose& camera_T_part) const {
+  return contours_[k]->radius() * state_->intrinsics.fx / (camera_T_part * contours_[k]->centre()).z();
+}
+
 bool ModelPoseTracker::passed_in_front(size_t k, const std::vector<bool>& moving,
                                        const std::vector<bool>& lost_moving) const {
   const State& s = *state_;
@@ -837,7 +838,7 @@ bool ModelPoseTracker::passed_in_front(size_t k, const std::vector<bool>& moving
     const Eigen::Vector3d c = s.camera_T_part[i] * contours_[i]->centre();
     if (c.z() < 0.05) return false;
     centre = centre_in_image(i, s.camera_T_part[i]);
-    radius = contours_[i]->radius() * s.intrinsics.fx / c.z();
+    radius = radius_in_image(i, s.camera_T_part[i]);
     depth = c.z();
     return true;
   };
@@ -859,7 +860,7 @@ RegionFrameResult ModelPoseTracker::search(const cv::Mat& image, int k, const Oc
   if (c.z() < 0.05) return best;
   // Candidate poses: the last one shifted across the view on a grid of image offsets, scored by
   // their contrast; the best few are tracked from.
-  const double radius_px = model.radius() * s.intrinsics.fx / c.z();
+  const double radius_px = radius_in_image(k, last);
   const double reach = std::max(options_.search_radii * radius_px, 60.0), step = std::max(radius_px / 3, 6.0);
   std::vector<std::pair<double, Pose>> candidates;
   for (double dy = -reach; dy <= reach; dy += step)
@@ -918,8 +919,7 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
   if (!options_.global_search || s.unseen[k] < options_.global_search_after ||
       (!s.rest_find[k] && s.unseen[k] % std::max(options_.global_search_every, 1) != 0))
     return std::nullopt;
-  const Eigen::Vector3d c = s.camera_T_part[k] * contours_[k]->centre();
-  const double radius_px = contours_[k]->radius() * s.intrinsics.fx / c.z();
+  const double radius_px = radius_in_image(k, s.camera_T_part[k]);
   const Eigen::Vector2d at = centre_in_image(k, s.camera_T_part[k]) + Eigen::Vector2d(s.intrinsics.cx, s.intrinsics.cy);
   // The blobs most like it: in its colours, and as large as it showed when last seen (the
   // furniture's or the floor's tiles in colours near its own are larger or smaller).
@@ -949,7 +949,7 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
   const Eigen::Vector3d c = last * model.centre();
   if (c.z() < 0.05) return std::nullopt;
   // Where its centre's image may be now: a grid around where it was last seen.
-  const double radius_px = model.radius() * s.intrinsics.fx / c.z();
+  const double radius_px = radius_in_image(k, last);
   const double reach = std::max(area.radii * radius_px, area.min_reach_px);
   const double base_reach = std::max(options_.rest_search_radii * radius_px, area.min_reach_px);
   const double step = std::max(radius_px / options_.rest_search_density, 6.0);
@@ -1120,7 +1120,7 @@ void ModelPoseTracker::recheck_rests(int frame, const cv::Mat& image, const std:
         rest_search(image, part, map, {.radii = options_.rest_recheck_across, .min_reach_px = 0, .stood_level = true, .levels = &levels});
     if (!found) continue;
     // Where it shows (its depth aside, which the silhouette gives weakly), and as clearly.
-    const double radius_px = contours_[k]->radius() * s.intrinsics.fx / (s.camera_T_part[k] * centre).z();
+    const double radius_px = radius_in_image(k, s.camera_T_part[k]);
     const double across = (centre_in_image(k, found->camera_T_part) - centre_in_image(k, s.camera_T_part[k])).norm();
     const VisibleContrast now = visible_contrast(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map, part);
     const VisibleContrast there = visible_contrast(image, s.intrinsics, *contours_[k], s.colors[k], found->camera_T_part, map, part);

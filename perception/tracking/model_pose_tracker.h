@@ -279,6 +279,8 @@ private:
   // Where the centre of part k's model shows in the image at that pose, relative to the
   // principal point (only differences and distances of these are used).
   Eigen::Vector2d centre_in_image(size_t k, const Pose& camera_T_part) const;
+  // The radius of part k's bounding sphere in the image at that pose (pixels, at its centre's depth).
+  double radius_in_image(size_t k, const Pose& camera_T_part) const;
   // Whether a moving part, nearer the camera, overlaps part k's image (bounding circles).
   // (`lost_moving`: parts lost in their carry a few frames ago, lost_mover_frames, count too.)
   bool passed_in_front(size_t k, const std::vector<bool>& moving, const std::vector<bool>& lost_moving) const;
