@@ -1,6 +1,7 @@
 #include "perception/tracking/model_pose_tracker.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <deque>
 #include <future>
@@ -460,12 +461,23 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     // a part lost for long costs less.)
     const bool rest_search_now = s.rest_find[k] || s.unseen[k] % std::max(options_.rest_search_every, 1) == 0;
     if (!is_seen(r) && !placed && options_.rest_search && !s.supports.empty() && rest_search_now) {
-      const std::optional<RegionFrameResult> found = rest_search(image, part);
+      bool where_colours_show = false;
+      const std::optional<RegionFrameResult> found = rest_search(image, part, &where_colours_show);
       if (found && s.rest_find[k]) {
         const Eigen::Vector3d moved = found->camera_T_part * contours_[k]->centre() - *s.rest_find[k] * contours_[k]->centre();
         if (moved.norm() < options_.rest_confirm_mm * 1e-3) {
           r = *found;
           found_resting = true;
+          // Found far from where it was lost, on its colours: the operator checks the carry.
+          if (where_colours_show) {
+            const double radii = (centre_in_image(k, r.camera_T_part) - centre_in_image(k, s.camera_T_part[k])).norm() /
+                                 radius_in_image(k, s.camera_T_part[k]);
+            char away[32];
+            std::snprintf(away, sizeof away, "%.1f", radii);
+            warnings_.push_back("part '" + models_[k].id + "', frame " + std::to_string(frame) + ": lost since frame " +
+                                std::to_string(frame - s.unseen[k]) + ", found again where its colours show, " + away +
+                                " of its radii from where it was last seen, standing on the furniture: check its carry");
+          }
         }
       }
       s.rest_find[k] = found ? std::optional<Pose>(found->camera_T_part) : std::nullopt;
@@ -896,7 +908,7 @@ bool ModelPoseTracker::within_rest_hold(size_t k, const Pose& measured) const {
          turn < options_.rest_hold_deg * M_PI / 180;
 }
 
-std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k) const {
+std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k, bool* where_colours_show) const {
   const State& s = *state_;
   // Scored on what the furniture and the other parts leave visible (its own stale pose hides nothing).
   const OcclusionMap map = occlusion_map(k);
@@ -934,9 +946,12 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
   for (const auto& [v, centre] : likeness)
     if (around.size() < static_cast<size_t>(options_.global_search_blobs)) around.push_back(centre);
   if (around.empty()) return std::nullopt;
-  if (std::optional<RegionFrameResult> found = rest_search(image, k, map, {.radii = options_.global_search_radii, .min_reach_px = 0, .around = &around}))
-    return found;
-  return rest_search(image, k, map, {.radii = options_.global_search_radii, .min_reach_px = 0, .other_faces = true, .around = &around});
+  std::optional<RegionFrameResult> found =
+      rest_search(image, k, map, {.radii = options_.global_search_radii, .min_reach_px = 0, .around = &around});
+  if (!found)
+    found = rest_search(image, k, map, {.radii = options_.global_search_radii, .min_reach_px = 0, .other_faces = true, .around = &around});
+  if (found && where_colours_show) *where_colours_show = true;
+  return found;
 }
 
 std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& image, int k, const OcclusionMap& map,

@@ -293,8 +293,9 @@ private:
   // image within rest_hold_px of the last, its turn within rest_hold_deg): no move.
   bool within_rest_hold(size_t k, const Pose& measured) const;
   // Part k looked for where it could have come to rest on the furniture (rest_search options);
-  // the best candidate that passes the rules that judge it on its visible lines, if any.
-  std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k) const;
+  // the best candidate that passes the rules that judge it on its visible lines, if any
+  // (`where_colours_show` set when it was found by global_search).
+  std::optional<RegionFrameResult> rest_search(const cv::Mat& image, int k, bool* where_colours_show = nullptr) const;
   // Where the rest search looks: within `radii` of the part's radii (at least `min_reach_px`)
   // of where it was last seen (`beyond`: only outside the plain reach, on stricter evidence); on
   // the faces other than its last rest's (`other_faces`: rest_search_faces, on the same strict
