@@ -5,6 +5,7 @@
 #include <cmath>
 #include <deque>
 #include <future>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -74,6 +75,10 @@ struct ModelPoseTracker::State {
   std::vector<std::optional<Pose>> rest_world;  // each part's pose (world) when last measured at rest
   std::vector<int> left_rest;                   // the frame that rest broke in (-1: not since)
   std::vector<int> rest_began;                  // the first frame of each part's current rest
+  // A rest that stood on nothing and was found nowhere it could stand: the part is taken as
+  // lost there, and looked for only where it could stand until seen (rest_recheck_unplaced).
+  std::vector<bool> doubted;
+  std::vector<int> unplaced_checks;  // rechecks in a row that found the current rest so
   // Each part's ride (ride_prediction.h), while it may have ridden: the riders, and its own rest
   // (world) their motion is applied to.
   struct Riding {
@@ -156,6 +161,8 @@ void ModelPoseTracker::start(const TrackingStart& start) {
   s.rest_world.assign(models_.size(), std::nullopt);
   s.left_rest.assign(models_.size(), -1);
   s.rest_began.assign(models_.size(), 0);
+  s.doubted.assign(models_.size(), false);
+  s.unplaced_checks.assign(models_.size(), 0);
   s.was_resting.assign(models_.size(), true);
   s.rides.assign(models_.size(), std::nullopt);
   if (options_.rest_search) s.supports = support_levels(furniture_);
@@ -414,6 +421,8 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       if ((r.camera_T_part * c - s.camera_T_part[k] * c).norm() > options_.stale_jump_radii * contours_[k]->radius())
         r.contrast = -1.0;
     }
+    // Its last pose is no place it can be: not tracked from there.
+    if (s.doubted[k] && !riding) r.contrast = -1.0;
     if (!is_seen(r) || mostly_hidden) {
       if (may_hold) {
         // Not looked for elsewhere while held: the part moving, or the hand carrying it, may
@@ -438,7 +447,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     };
     // Placed by the operator in this frame: not looked for elsewhere.
     const bool placed = std::find(corrected.begin(), corrected.end(), k) != corrected.end();
-    if (!is_seen(r) && !placed) {
+    if (!is_seen(r) && !placed && !s.doubted[k]) {
       // Not farther than its radius from a rest it was seen at in the last frame: a part taken
       // from rest has not got that far yet, and what the search finds there is what passed in
       // front of it (waiter_0: the sugar box carried past the cracker box, taken for it 30 cm off).
@@ -486,6 +495,7 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
       s.rest_find[k] = is_seen(r) ? std::optional<Pose>(r.camera_T_part) : std::nullopt;
     }
     const bool seen_now = is_seen(r) || found_resting;
+    if (seen_now) s.doubted[k] = false;
     const bool seen_before = s.seen_last[k];
     s.seen_last[k] = seen_now;
     s.unseen[k] = seen_now ? 0 : s.unseen[k] + 1;
@@ -550,7 +560,10 @@ std::vector<PoseObservation> ModelPoseTracker::track(int frame, const cv::Mat& i
     // (tracked free there from the rest, a frame's slide in depth would carry on into the rest).
     if (found_resting) follow_back(k, date_rest_back(k, frame, bar, 1), bar);
     // Come to rest (three frames still): the frames before may show it there already.
-    if (resting[k] && !s.was_resting[k]) s.rest_began[k] = options_.date_rests_back ? date_rest_back(k, frame, bar) : frame - 2;
+    if (resting[k] && !s.was_resting[k]) {
+      s.rest_began[k] = options_.date_rests_back ? date_rest_back(k, frame, bar) : frame - 2;
+      s.unplaced_checks[k] = 0;
+    }
   }
   // A part placed again is where the operator put it in this frame, measured or not; the frames
   // before, since it was lost, may show it there already.
@@ -1128,18 +1141,34 @@ void ModelPoseTracker::recheck_rests(int frame, const cv::Mat& image, const std:
       if (j != k && parts_[j].planning)
         if (const auto top = carrier_top(parts_[j].extent, s.world_T_camera * s.camera_T_part[j]))
           under.push_back(support_level(*top));
-    if (stands_on(under, models_[k].mesh, centre, before, options_.rest_recheck_height, max_tilt)) continue;
+    if (stands_on(under, models_[k].mesh, centre, before, options_.rest_recheck_height, max_tilt)) {
+      s.unplaced_checks[k] = 0;
+      continue;
+    }
     const int part = static_cast<int>(k);
     const OcclusionMap map = occlusion_map(part);
     const std::optional<RegionFrameResult> found =
         rest_search(image, part, map, {.radii = options_.rest_recheck_across, .min_reach_px = 0, .stood_level = true, .levels = &levels});
-    if (!found) continue;
     // Where it shows (its depth aside, which the silhouette gives weakly), and as clearly.
-    const double radius_px = radius_in_image(k, s.camera_T_part[k]);
-    const double across = (centre_in_image(k, found->camera_T_part) - centre_in_image(k, s.camera_T_part[k])).norm();
-    const VisibleContrast now = visible_contrast(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map, part);
-    const VisibleContrast there = visible_contrast(image, s.intrinsics, *contours_[k], s.colors[k], found->camera_T_part, map, part);
-    if (across > options_.rest_recheck_across * radius_px || there.contrast < now.contrast - options_.rest_recheck_margin) continue;
+    bool placed = false;
+    if (found) {
+      const double radius_px = radius_in_image(k, s.camera_T_part[k]);
+      const double across = (centre_in_image(k, found->camera_T_part) - centre_in_image(k, s.camera_T_part[k])).norm();
+      const VisibleContrast now = visible_contrast(image, s.intrinsics, *contours_[k], s.colors[k], s.camera_T_part[k], map, part);
+      const VisibleContrast there = visible_contrast(image, s.intrinsics, *contours_[k], s.colors[k], found->camera_T_part, map, part);
+      placed = across <= options_.rest_recheck_across * radius_px && there.contrast >= now.contrast - options_.rest_recheck_margin;
+    }
+    if (!placed) {
+      // How far above the highest level under it (none: as far as can be).
+      const Eigen::Vector3d at = before * centre;
+      const double bottom = at.z() - centre_height(models_[k].mesh, centre, before.linear());
+      double above = std::numeric_limits<double>::infinity();
+      for (const SupportLevel& l : levels)
+        if (l.holds(at.head<2>()) && bottom - l.height > -options_.rest_recheck_height) above = std::min(above, bottom - l.height);
+      s.unplaced_checks[k] = above > options_.rest_recheck_unplaced_height ? s.unplaced_checks[k] + 1 : 0;
+      if (options_.rest_recheck_unplaced && s.unplaced_checks[k] >= options_.rest_recheck_unplaced_checks) lose_rest(k, frame);
+      continue;
+    }
     // The whole rest was there: its samples so far move with it.
     const Pose after = s.world_T_camera * found->camera_T_part;
     auto& samples = s.tracks.samples[k];
@@ -1161,6 +1190,22 @@ void ModelPoseTracker::recheck_rests(int frame, const cv::Mat& image, const std:
                         on + ", " + std::to_string(static_cast<int>(std::lround(moved_mm))) +
                         " mm away along its line of sight, and rests there");
   }
+}
+
+void ModelPoseTracker::lose_rest(size_t k, int frame) {
+  State& s = *state_;
+  auto& samples = s.tracks.samples[k];
+  for (int f = std::max(s.rest_began[k], 0); f <= frame; ++f) samples[f].valid = false;
+  warnings_.push_back("part '" + models_[k].id + "', frames " + std::to_string(s.rest_began[k]) + "-" + std::to_string(frame) +
+                      ": its rest was tracked standing on nothing, and it shows standing nowhere near: taken as lost there "
+                      "(something not modelled, a hand, may have held it)");
+  s.seen_last[k] = false;
+  s.unseen[k] = 1;
+  s.centres[k].clear();
+  s.previous[k].reset();
+  s.rest_find[k].reset();
+  s.doubted[k] = true;
+  s.unplaced_checks[k] = 0;
 }
 
 RegionFrameResult ModelPoseTracker::by_print(const cv::Mat& image, int k, const OcclusionMap& map,
