@@ -5,7 +5,6 @@
 #include <cmath>
 #include <deque>
 #include <future>
-#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -809,7 +808,7 @@ void ModelPoseTracker::ride_back(size_t k, int frame) {
   if (gap_end < 0 || last < 0) return;
   const Pose placed = mine[frame].pose;
   const Eigen::Vector3d& c = contours_[k]->centre();
-  const double bottom = (placed * c).z() - centre_height(models_[k].mesh, c, placed.linear());
+  const double bottom = lowest_point_height(models_[k].mesh, placed);
   for (size_t j = 0; j < models_.size(); ++j) {
     const auto& carrier = s.tracks.samples[j];
     if (j == k || !carrier[frame].valid || !carrier[last].valid) continue;
@@ -1106,8 +1105,7 @@ std::optional<RegionFrameResult> ModelPoseTracker::rest_search(const cv::Mat& im
     auto tilt_from = [&](const Eigen::Vector3d& up) { return std::acos(std::clamp(up.dot(world_R.transpose().col(2)), -1.0, 1.0)); };
     double tilt = tilt_from(part_up);
     if (options_.rest_tilt_from_level) tilt = std::min(tilt, tilt_from(standing_level(orientations[t.face]).transpose().col(2)));
-    const double bottom = (s.world_T_camera * r.camera_T_part * model.centre()).z() -
-                          centre_height(models_[k].mesh, model.centre(), world_R);
+    const double bottom = lowest_point_height(models_[k].mesh, s.world_T_camera * r.camera_T_part);
     const double support = (s.world_T_camera * candidate * model.centre()).z() - resting[t.face].lift;
     if (tilt > options_.rest_tilt_deg * M_PI / 180 || std::abs(bottom - support) > options_.rest_height_tolerance) continue;
     // The most evidence: edges found, and how clearly.
@@ -1159,12 +1157,7 @@ void ModelPoseTracker::recheck_rests(int frame, const cv::Mat& image, const std:
       placed = across <= options_.rest_recheck_across * radius_px && there.contrast >= now.contrast - options_.rest_recheck_margin;
     }
     if (!placed) {
-      // How far above the highest level under it (none: as far as can be).
-      const Eigen::Vector3d at = before * centre;
-      const double bottom = at.z() - centre_height(models_[k].mesh, centre, before.linear());
-      double above = std::numeric_limits<double>::infinity();
-      for (const SupportLevel& l : levels)
-        if (l.holds(at.head<2>()) && bottom - l.height > -options_.rest_recheck_height) above = std::min(above, bottom - l.height);
+      const double above = height_above_levels(levels, models_[k].mesh, centre, before, options_.rest_recheck_height);
       s.unplaced_checks[k] = above > options_.rest_recheck_unplaced_height ? s.unplaced_checks[k] + 1 : 0;
       if (options_.rest_recheck_unplaced && s.unplaced_checks[k] >= options_.rest_recheck_unplaced_checks) lose_rest(k, frame);
       continue;
@@ -1240,8 +1233,7 @@ void ModelPoseTracker::watch_rides(int frame, const std::vector<bool>& resting) 
     if (s.rides[k] && s.rides[k]->ride.parted(*ride_now, ride_rules())) s.rides[k].reset();
     if (s.rides[k] || !resting[k] || s.measured_at[k] >= frame - 1) continue;
     const Pose rest = s.world_T_camera * s.camera_T_part[k];
-    const double bottom = (rest * contours_[k]->centre()).z() -
-                          centre_height(models_[k].mesh, contours_[k]->centre(), rest.linear());
+    const double bottom = lowest_point_height(models_[k].mesh, rest);
     if (std::optional<Ride> ride =
             Ride::detect(k, rest * contours_[k]->centre(), bottom, contours_[k]->radius(), *ride_now, ride_rules()))
       s.rides[k] = State::Riding{std::move(*ride), rest};
@@ -1261,7 +1253,7 @@ std::vector<RidePart> ModelPoseTracker::ride_parts(int frame) const {
     RidePart& p = parts[j];
     if (s.rest_world[j]) {
       p.rest = *s.rest_world[j] * c;
-      p.rest_bottom = p.rest->z() - centre_height(models_[j].mesh, c, s.rest_world[j]->linear());
+      p.rest_bottom = lowest_point_height(models_[j].mesh, *s.rest_world[j]);
     }
     p.left_rest = s.left_rest[j];
     p.tracked = s.measured_at[j] >= frame - 1;

@@ -57,17 +57,41 @@ bool stands_on(const std::vector<SupportLevel>& levels, const RenderMesh& mesh, 
   const Eigen::Matrix3d& R = world_T_part.linear();
   if (R.row(2).cwiseAbs().maxCoeff() < std::cos(max_tilt)) return false;  // its axis nearest up
   const Eigen::Vector3d at = world_T_part * centre;
-  const double bottom = at.z() - centre_height(mesh, centre, R);
+  const double bottom = lowest_point_height(mesh, world_T_part);
   return std::any_of(levels.begin(), levels.end(), [&](const SupportLevel& l) {
     return std::abs(bottom - l.height) <= height_tolerance && l.holds(at.head<2>());
   });
 }
 
-double centre_height(const RenderMesh& mesh, const Eigen::Vector3d& centre, const Eigen::Matrix3d& world_R_part) {
-  const Eigen::Vector3d up = world_R_part.transpose().col(2);  // the vertical in the part's frame
+double height_above_levels(const std::vector<SupportLevel>& levels, const RenderMesh& mesh, const Eigen::Vector3d& centre,
+                           const Pose& world_T_part, double height_tolerance) {
+  const Eigen::Vector2d at = (world_T_part * centre).head<2>();
+  const double bottom = lowest_point_height(mesh, world_T_part);
+  double above = std::numeric_limits<double>::infinity();
+  for (const SupportLevel& l : levels)
+    if (l.holds(at) && bottom - l.height > -height_tolerance) above = std::min(above, bottom - l.height);
+  return above;
+}
+
+namespace {
+
+// The least of the mesh's vertices along `up` (part frame).
+double lowest_along(const RenderMesh& mesh, const Eigen::Vector3d& up) {
   double lowest = std::numeric_limits<double>::max();
   for (const auto& v : mesh.vertices) lowest = std::min(lowest, up.dot(v.cast<double>()));
-  return up.dot(centre) - lowest;
+  return lowest;
+}
+
+}  // namespace
+
+double lowest_point_height(const RenderMesh& mesh, const Pose& world_T_part) {
+  // The vertical in the part's frame.
+  return world_T_part.translation().z() + lowest_along(mesh, world_T_part.linear().transpose().col(2));
+}
+
+double centre_height(const RenderMesh& mesh, const Eigen::Vector3d& centre, const Eigen::Matrix3d& world_R_part) {
+  const Eigen::Vector3d up = world_R_part.transpose().col(2);  // the vertical in the part's frame
+  return up.dot(centre) - lowest_along(mesh, up);
 }
 
 bool inside_furniture_box(const std::vector<FurnitureMesh>& furniture, const Eigen::Vector3d& world_point) {

@@ -41,6 +41,9 @@ SupportLevel support_level(const std::vector<Eigen::Vector3d>& polygon);
 // How far the centre of a mesh stands above its lowest point at that orientation (world z).
 double centre_height(const RenderMesh& mesh, const Eigen::Vector3d& centre, const Eigen::Matrix3d& world_R_part);
 
+// The height (world z) of a mesh's lowest point at `world_T_part`.
+double lowest_point_height(const RenderMesh& mesh, const Pose& world_T_part);
+
 // Whether `world_point` lies inside one of the furniture's boxes (the visuals that are boxes:
 // walls, boards, table tops; other meshes may be hollow, a shelf's inside, and are not asked).
 bool inside_furniture_box(const std::vector<FurnitureMesh>& furniture, const Eigen::Vector3d& world_point);
@@ -71,6 +74,12 @@ struct RestingCandidate {
 // within `max_tilt` (rad) of the vertical.
 bool stands_on(const std::vector<SupportLevel>& levels, const RenderMesh& mesh, const Eigen::Vector3d& centre,
                const Pose& world_T_part, double height_tolerance, double max_tilt);
+
+// How far a part at `world_T_part` floats: its lowest point above the highest of `levels` under
+// its `centre` (part frame) that it is not sunk into by more than `height_tolerance` (m);
+// infinity over none.
+double height_above_levels(const std::vector<SupportLevel>& levels, const RenderMesh& mesh, const Eigen::Vector3d& centre,
+                           const Pose& world_T_part, double height_tolerance);
 
 // The orientations of a part laid on each side of its box (a box put down on its side, not as
 // it stood at `last_rest`): the part's axes +-x, +-y, +-z turned onto the world's down, those

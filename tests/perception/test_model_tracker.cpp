@@ -340,9 +340,10 @@ struct TaskVideo {
   std::unique_ptr<PoseTracker> tracker(const ModelTrackerOptions& options) const {
     return make_model_tracker(scene, s.scene, DEMOPLAN_DATA_DIR, load_tracker_init(s.init), s.init, options);
   }
-  Demonstration extract(const ModelTrackerOptions& options = {}) const {
-    return extract_demonstration(s.video, load_camera(s.camera), *tracker(options), scene.task, eo).demonstration;
+  ExtractionResult extraction(const ModelTrackerOptions& options = {}) const {
+    return extract_demonstration(s.video, load_camera(s.camera), *tracker(options), scene.task, eo);
   }
+  Demonstration extract(const ModelTrackerOptions& options = {}) const { return extraction(options).demonstration; }
 };
 
 // The first event of `type` of part `id` after `frame`; null when there is none.
@@ -619,8 +620,7 @@ TEST(ModelTracker, APartCarriedFarWhileLostIsFoundWhereItsColoursShow) {
   ASSERT_TRUE(lifted && put_on_shelf);
   const auto cracker = static_cast<size_t>(put_on_shelf->object);
   auto near = [](const ContactEvent* e, const ContactEvent* t) { return e && std::abs(e->frame - t->frame) <= 2; };
-  const ExtractionResult result = extract_demonstration(video.s.video, load_camera(video.s.camera),
-                                                        *video.tracker({}), video.scene.task, video.eo);
+  const ExtractionResult result = video.extraction();
   const Demonstration& found = result.demonstration;
   // The operator is told where to check.
   const auto told = std::find_if(result.warnings.begin(), result.warnings.end(), [](const std::string& w) {

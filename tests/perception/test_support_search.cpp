@@ -2,6 +2,8 @@
 // rest stands on a support.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <Eigen/Geometry>
 
 #include "perception/render/render_mesh.h"
@@ -110,6 +112,21 @@ TEST(StandsOn, OnATraysTopLevelWithinTheToleranceAndOverIt) {
   EXPECT_FALSE(stands_on({level}, box, centre, at({0.5, 1.0, 0.8075}, tilted), tolerance, tilt)) << "18 degrees off level";
   // No level: nothing to stand on.
   EXPECT_FALSE(stands_on({}, box, centre, at({0.5, 1.0, 0.8075}), tolerance, tilt));
+  // How far it floats: its lowest point (10 cm below its centre standing, 5 cm on its side) over
+  // the highest level under it it is not sunk into; over none, without end. (The mesh's vertices are
+  // floats: within 1e-7 m.)
+  EXPECT_NEAR(lowest_point_height(box, at({0.5, 1.0, 0.8075})), 0.7075, 1e-7);
+  EXPECT_NEAR(lowest_point_height(box, at({0.5, 1.0, 0.7575}, on_side)), 0.7075, 1e-7);
+  SupportLevel floor = level;
+  floor.height = 0.0;
+  EXPECT_NEAR(height_above_levels({floor, level}, box, centre, at({0.5, 1.0, 0.8075 + 0.12}), tolerance), 0.12, 1e-7);
+  EXPECT_NEAR(height_above_levels({floor, level}, box, centre, at({0.5, 1.0, 0.8075 - 0.01}), tolerance), -0.01, 1e-7)
+      << "sunk within the tolerance: on the tray";
+  EXPECT_NEAR(height_above_levels({floor, level}, box, centre, at({0.5, 1.0, 0.8075 - 0.05}), tolerance), 0.6575, 1e-7)
+      << "sunk 5 cm into the tray: over the floor";
+  EXPECT_EQ(height_above_levels({level}, box, centre, at(Eigen::Vector3d(0.5, 1.0, 0.9) + 0.25 * tray.linear().col(0)), tolerance),
+            std::numeric_limits<double>::infinity())
+      << "beside the tray: over no level";
   // Stacked: on the top of the same box standing on the tray (the recheck counts the other
   // parts' tops as levels it may stand on).
   const auto box_top = carrier_top(Eigen::AlignedBox3d(Eigen::Vector3d(-0.05, -0.05, -0.1), Eigen::Vector3d(0.05, 0.05, 0.1)),
